@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Small fixed-size vectors typed by dimension (STYLE.md §4).
+
+#include <Eigen/Core>
+
+namespace fddem {
+
+template <int Dim>
+using Vec = Eigen::Matrix<double, Dim, 1>;
+
+/// Angular velocity and torque: a scalar about z in 2D, a vector in 3D.
+template <int Dim>
+struct Angular;
+template <>
+struct Angular<2> {
+    using type = double;
+};
+template <>
+struct Angular<3> {
+    using type = Vec<3>;
+};
+template <int Dim>
+using AngularVec = typename Angular<Dim>::type;
+
+/// ω × r for a scalar ω about z (2D).
+inline Vec<2> cross(double omega, const Vec<2>& r)
+{
+    return {-omega * r.y(), omega * r.x()};
+}
+inline Vec<3> cross(const Vec<3>& omega, const Vec<3>& r)
+{
+    return omega.cross(r);
+}
+
+/// r × f in 2D: its z-component (in 3D the same call is cross(Vec<3>, Vec<3>) above).
+inline double cross(const Vec<2>& r, const Vec<2>& f)
+{
+    return r.x() * f.y() - r.y() * f.x();
+}
+
+} // namespace fddem

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// One interface for the pressure-correction Poisson solvers (DESIGN.md §3): the direct FFTW
+/// solver where the boundaries allow it, hypre structured multigrid otherwise.
+
+#include "fddem/fluid/boundary_conditions.hpp"
+#include "fddem/grid/fields.hpp"
+#include "fddem/grid/mac_grid.hpp"
+
+#include <memory>
+#include <string>
+
+namespace fddem {
+
+/// Solves the cell-centred 5-point (7-point in 3D) Poisson problem
+///     Σ_d (φ_{i+e_d} − 2 φ_i + φ_{i−e_d}) / h_d² = rhs_i      on the owned cells,
+/// with a zero normal gradient at walls and periodic images across periodic axes.
+/// The operator is singular (constants); the solvers remove the mean of `rhs` and return the
+/// zero-mean solution. Ghosts of `phi` are not filled.
+template <int Dim>
+class PoissonSolver {
+public:
+    PoissonSolver() = default;
+    PoissonSolver(const PoissonSolver&) = delete;
+    PoissonSolver& operator=(const PoissonSolver&) = delete;
+    PoissonSolver(PoissonSolver&&) = delete;
+    PoissonSolver& operator=(PoissonSolver&&) = delete;
+    virtual ~PoissonSolver() = default;
+
+    virtual void solve(const CellField<Dim>& rhs, CellField<Dim>& phi) = 0;
+    [[nodiscard]] virtual std::string name() const = 0;
+    /// Iterations of the last solve (1 for a direct solver).
+    [[nodiscard]] virtual int last_iterations() const = 0;
+};
+
+struct PoissonSettings {
+    std::string kind = "auto"; ///< "auto" (FFT: every boundary here allows it), "fft", "hypre"
+    double tolerance = 1e-10;  ///< relative residual, iterative solvers
+    int max_iterations = 200;
+};
+
+/// Builds the solver named in `settings` (throws InputError for an unknown or unusable kind).
+template <int Dim>
+[[nodiscard]] std::unique_ptr<PoissonSolver<Dim>>
+make_poisson_solver(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                    const PoissonSettings& settings);
+
+} // namespace fddem

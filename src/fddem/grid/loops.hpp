@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Loops over boxes of indices: the only place with OpenMP pragmas for field loops
+/// (STYLE.md §13). Every loop runs over a box the caller passes (the owned part of the grid).
+
+#include "fddem/core/index.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace fddem {
+
+/// Below this many points a loop runs on one thread: the fork/join would cost more.
+inline constexpr std::size_t min_points_for_threads = 8192;
+
+/// Calls f(index) for every index in `box`, in parallel over the outermost axis.
+/// `f` must not write to any location another index writes.
+template <int Dim, class F>
+void for_each_index(const Box<Dim>& box, F&& f)
+{
+    static_assert(Dim == 2 || Dim == 3, "fddem grids are 2D or 3D");
+    const bool is_threaded = box.size() >= min_points_for_threads;
+    if constexpr (Dim == 2) {
+#pragma omp parallel for schedule(static) if (is_threaded)
+        for (int j = box.lo[1]; j < box.hi[1]; ++j) {
+            for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+                f(Index<2>{i, j});
+            }
+        }
+    } else {
+#pragma omp parallel for schedule(static) if (is_threaded)
+        for (int k = box.lo[2]; k < box.hi[2]; ++k) {
+            for (int j = box.lo[1]; j < box.hi[1]; ++j) {
+                for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+                    f(Index<3>{i, j, k});
+                }
+            }
+        }
+    }
+}
+
+/// Max over `box` of g(index) (g ≥ 0); the one reduction that becomes an MPI_Allreduce.
+template <int Dim, class G>
+[[nodiscard]] double max_over(const Box<Dim>& box, G&& g)
+{
+    double result = 0.0;
+    const bool is_threaded = box.size() >= min_points_for_threads;
+    if constexpr (Dim == 2) {
+#pragma omp parallel for schedule(static) reduction(max : result) if (is_threaded)
+        for (int j = box.lo[1]; j < box.hi[1]; ++j) {
+            for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+                result = std::max(result, g(Index<2>{i, j}));
+            }
+        }
+    } else {
+#pragma omp parallel for schedule(static) reduction(max : result) if (is_threaded)
+        for (int k = box.lo[2]; k < box.hi[2]; ++k) {
+            for (int j = box.lo[1]; j < box.hi[1]; ++j) {
+                for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+                    result = std::max(result, g(Index<3>{i, j, k}));
+                }
+            }
+        }
+    }
+    return result;
+}
+
+/// Sum over `box` of g(index). Partial sums are taken per outermost-axis slab and added in
+/// slab order, so the result is bit-identical for any thread count (issue 5: identical reruns).
+template <int Dim, class G>
+[[nodiscard]] double sum_over(const Box<Dim>& box, G&& g)
+{
+    const int outer = Dim - 1;
+    const int n_slabs = std::max(box.extent(outer), 0);
+    std::vector<double> partial(static_cast<std::size_t>(n_slabs), 0.0);
+    const bool is_threaded = box.size() >= min_points_for_threads;
+#pragma omp parallel for schedule(static) if (is_threaded)
+    for (int s = 0; s < n_slabs; ++s) {
+        Box<Dim> slab = box;
+        slab.lo[static_cast<std::size_t>(outer)] = box.lo[static_cast<std::size_t>(outer)] + s;
+        slab.hi[static_cast<std::size_t>(outer)] = slab.lo[static_cast<std::size_t>(outer)] + 1;
+        double acc = 0.0;
+        if constexpr (Dim == 2) {
+            const int j = slab.lo[1];
+            for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+                acc += g(Index<2>{i, j});
+            }
+        } else {
+            const int k = slab.lo[2];
+            for (int j = box.lo[1]; j < box.hi[1]; ++j) {
+                for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+                    acc += g(Index<3>{i, j, k});
+                }
+            }
+        }
+        partial[static_cast<std::size_t>(s)] = acc;
+    }
+    double result = 0.0;
+    for (const double p : partial) {
+        result += p;
+    }
+    return result;
+}
+
+} // namespace fddem

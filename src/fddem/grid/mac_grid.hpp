@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The uniform staggered (MAC) grid of paper §2.2.
+///
+/// Staggering convention: the face `(axis, i)` is the *low* face of cell i along `axis`,
+/// at x_{i−1/2}. This is the paper's convention: in eq. (7) u_ij is driven by p_ij − p_{i−1,j}.
+///
+///          +-----v(i,j+1)-----+
+///          |                  |
+///       u(i,j)    p(i,j)   u(i+1,j)        cell (i,j): centre ((i+½)h_x, (j+½)h_y)
+///          |                  |            u(i,j) at x = i·h_x, v(i,j) at y = j·h_y
+///          +-----v(i,j)-------+
+///
+/// Every array of the grid (cell or face) shares one memory layout: n + 1 entries per axis
+/// plus `n_ghost` layers on each side, so a cell and the faces of the same index have the
+/// same flat offset, and a neighbour along `axis` is always ±stride(axis) away.
+
+#include "fddem/core/index.hpp"
+#include "fddem/core/vec.hpp"
+
+#include <cstddef>
+
+namespace fddem {
+
+template <int Dim>
+class MacGrid {
+public:
+    /// Ghost layers on every side: 2 covers the widest delta kernel (Peskin 4-point).
+    static constexpr int n_ghost = 2;
+
+    /// `cells` per axis (each ≥ 1), box `origin` and `length` [m] (each > 0).
+    MacGrid(const Index<Dim>& cells, const Vec<Dim>& origin, const Vec<Dim>& length);
+
+    [[nodiscard]] const Index<Dim>& cells() const noexcept { return cells_; }
+    [[nodiscard]] int cells(int axis) const noexcept { return cells_[ax(axis)]; }
+    [[nodiscard]] const Vec<Dim>& origin() const noexcept { return origin_; }
+    [[nodiscard]] const Vec<Dim>& length() const noexcept { return length_; }
+    /// Cell size along `axis` [m].
+    [[nodiscard]] double spacing(int axis) const noexcept { return spacing_[axis]; }
+    [[nodiscard]] const Vec<Dim>& spacing() const noexcept { return spacing_; }
+    /// Cell volume [m³] (area [m²] in 2D: quantities in 2D are per unit depth).
+    [[nodiscard]] double cell_volume() const noexcept { return cell_volume_; }
+    [[nodiscard]] std::size_t n_cells() const noexcept { return cell_box().size(); }
+
+    /// All cells of the domain, [0, n).
+    [[nodiscard]] Box<Dim> cell_box() const noexcept { return {Index<Dim>{}, cells_}; }
+    /// The cells this process owns (the whole domain until the grid is split across ranks).
+    [[nodiscard]] Box<Dim> owned_cells() const noexcept { return cell_box(); }
+    /// All faces normal to `axis`, including those on the boundary: [0, n + e_axis).
+    [[nodiscard]] Box<Dim> face_box(int axis) const noexcept
+    {
+        return {Index<Dim>{}, cells_ + unit<Dim>(axis)};
+    }
+    /// The box every array is allocated over (n + 1 per axis, plus ghosts).
+    [[nodiscard]] Box<Dim> storage_box() const noexcept
+    {
+        Box<Dim> b{Index<Dim>{}, cells_};
+        for (int d = 0; d < Dim; ++d) {
+            b.hi[ax(d)] += 1;
+        }
+        return b.grown(n_ghost);
+    }
+
+    [[nodiscard]] Vec<Dim> cell_centre(const Index<Dim>& cell) const noexcept;
+    /// Centre of the low face of `cell` along `axis`.
+    [[nodiscard]] Vec<Dim> face_centre(int axis, const Index<Dim>& cell) const noexcept;
+
+    /// Flat offset of an index into any array of this grid.
+    [[nodiscard]] std::ptrdiff_t offset(const Index<Dim>& i) const noexcept
+    {
+        std::ptrdiff_t off = 0;
+        for (int d = 0; d < Dim; ++d) {
+            off += static_cast<std::ptrdiff_t>(i[ax(d)] + n_ghost) * stride_[ax(d)];
+        }
+        return off;
+    }
+    [[nodiscard]] std::ptrdiff_t stride(int axis) const noexcept { return stride_[ax(axis)]; }
+    [[nodiscard]] std::size_t storage_size() const noexcept { return storage_size_; }
+
+private:
+    static constexpr std::size_t ax(int axis) noexcept { return static_cast<std::size_t>(axis); }
+
+    Index<Dim> cells_;
+    Vec<Dim> origin_;
+    Vec<Dim> length_;
+    Vec<Dim> spacing_;
+    double cell_volume_;
+    std::array<std::ptrdiff_t, Dim> stride_{};
+    std::size_t storage_size_;
+};
+
+} // namespace fddem

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// A case as read and checked by io/case_reader: plain data, dimension-agnostic (the number
+/// of entries of `domain.size` is the dimension). Every field mirrors one case key declared in
+/// io/case_schema.cpp, which holds its unit, default, range and doc.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fddem {
+
+struct LineSample {
+    std::string name;
+    std::vector<double> from; ///< [m]
+    std::vector<double> to;   ///< [m]
+    int n_points = 101;
+};
+
+struct CaseConfig {
+    std::string source_file; ///< the case file path, for messages
+    std::string title;       ///< [case] title
+
+    // [domain]
+    int dimension = 2;
+    std::vector<double> origin; ///< [m]
+    std::vector<double> size;   ///< [m]
+    std::vector<int> cells;
+    std::vector<bool> periodic;
+
+    // [walls]: velocity of each wall [m/s], indexed [axis][side]; zero when not given.
+    std::vector<std::array<std::vector<double>, 2>> wall_velocity;
+
+    // [fluid]
+    double density = 1.0;           ///< ρf [kg/m³]
+    double viscosity = 1.0;         ///< μ [Pa·s]
+    std::vector<double> gravity;    ///< g [m/s²]; acts on particles only (DESIGN.md §1)
+    std::vector<double> body_force; ///< uniform force on the fluid [N/m³] (e.g. a channel's drive)
+
+    // [time]
+    double dt = 1e-3;                       ///< Δt [s]
+    std::optional<double> end_time;         ///< [s]
+    std::optional<double> steady_tolerance; ///< stop when max|u^{n+1}−u^n|/(Δt) · L/U² drops below
+    long max_steps = 100000000;
+
+    // [simple]
+    double tolerance = 1e-6; ///< normalised mass and momentum residuals
+    int max_outer_iterations = 50;
+    double velocity_relaxation = 1.0;
+    double pressure_relaxation = 1.0;
+    int momentum_sweeps = 2;
+    std::string convection = "central";   ///< "central" (deferred correction) or "upwind"
+    std::string pressure_solver = "auto"; ///< "auto", "fft" or "hypre"
+    double linear_tolerance = 1e-10;      ///< hypre relative residual tolerance
+    int linear_max_iterations = 200;
+
+    // [output]
+    std::string output_directory; ///< empty: runs/<case file stem>
+    double field_interval = 0.0;  ///< [s]; 0: fields at the end only
+    long log_interval = 100;      ///< steps between plain log lines (no terminal)
+    std::vector<LineSample> lines;
+};
+
+} // namespace fddem
