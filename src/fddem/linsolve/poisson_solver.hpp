@@ -3,10 +3,10 @@
 /// One interface for the pressure-correction Poisson solvers (DESIGN.md §3): the direct FFTW
 /// solver where the boundaries allow it, hypre structured multigrid otherwise.
 
-#include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/grid/fields.hpp"
 #include "fddem/grid/mac_grid.hpp"
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -39,10 +39,11 @@ struct PoissonSettings {
     int max_iterations = 200;
 };
 
-/// Builds the solver named in `settings` (throws InputError for an unknown or unusable kind).
+/// Builds the solver named in `settings` for a grid whose axes are periodic where
+/// `is_periodic` says and walled elsewhere (throws InputError for an unknown kind).
 template <int Dim>
 [[nodiscard]] std::unique_ptr<PoissonSolver<Dim>>
-make_poisson_solver(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+make_poisson_solver(const MacGrid<Dim>& grid, const std::array<bool, Dim>& is_periodic,
                     const PoissonSettings& settings);
 
 } // namespace fddem
