@@ -103,6 +103,21 @@ void fill_cell_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
     }
 }
 
+template <int Dim>
+void fill_periodic_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                          GridArray<Dim>& a)
+{
+    for (int d = 0; d < Dim; ++d) {
+        if (bc.periodic(d)) {
+            wrap_periodic(grid, d, a);
+        }
+    }
+}
+
+template void fill_periodic_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
+                                      GridArray<2>&);
+template void fill_periodic_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
+                                      GridArray<3>&);
 template void fill_velocity_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
                                       FaceField<2>&);
 template void fill_velocity_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&,

@@ -64,6 +64,11 @@ template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                           FaceField<Dim>& u);
 
+/// Fills only the periodic images of one array (cell field or one velocity component).
+template <int Dim>
+void fill_periodic_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                          GridArray<Dim>& a);
+
 /// Fills the ghost layers of a cell field: periodic images, or a zero normal gradient at
 /// walls (the pressure condition of SIMPLE at a no-slip wall).
 template <int Dim>

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace fddem {
@@ -15,12 +16,13 @@ namespace fddem {
 inline constexpr std::size_t min_points_for_threads = 8192;
 
 /// Calls f(index) for every index in `box`, in parallel over the outermost axis.
-/// `f` must not write to any location another index writes.
+/// `f` must not write to any location another index writes. `points_per_index` is the work
+/// one call does, in grid points (it decides whether threads pay off).
 template <int Dim, class F>
-void for_each_index(const Box<Dim>& box, F&& f)
+void for_each_index(const Box<Dim>& box, F&& f, std::size_t points_per_index = 1)
 {
     static_assert(Dim == 2 || Dim == 3, "fddem grids are 2D or 3D");
-    const bool is_threaded = box.size() >= min_points_for_threads;
+    const bool is_threaded = box.size() * points_per_index >= min_points_for_threads;
     if constexpr (Dim == 2) {
 #pragma omp parallel for schedule(static) if (is_threaded)
         for (int j = box.lo[1]; j < box.hi[1]; ++j) {
@@ -38,6 +40,16 @@ void for_each_index(const Box<Dim>& box, F&& f)
             }
         }
     }
+}
+
+/// Calls f(row_start) once per row of `box` along axis 0 (row_start has axis 0 = box.lo[0]);
+/// `f` loops over the row itself, so inner loops see unit stride. Rows run in parallel.
+template <int Dim, class F>
+void for_each_row(const Box<Dim>& box, F&& f)
+{
+    Box<Dim> rows = box;
+    rows.hi[0] = rows.lo[0] + 1;
+    for_each_index(rows, std::forward<F>(f), static_cast<std::size_t>(box.extent(0)));
 }
 
 /// Max over `box` of g(index) (g ≥ 0); the one reduction that becomes an MPI_Allreduce.
@@ -60,6 +72,30 @@ template <int Dim, class G>
                 for (int i = box.lo[0]; i < box.hi[0]; ++i) {
                     result = std::max(result, g(Index<3>{i, j, k}));
                 }
+            }
+        }
+    }
+    return result;
+}
+
+/// Max over the rows of `box` (along axis 0) of g(row_start) (g ≥ 0), rows in parallel.
+template <int Dim, class G>
+[[nodiscard]] double max_over_rows(const Box<Dim>& box, G&& g)
+{
+    Box<Dim> rows = box;
+    rows.hi[0] = rows.lo[0] + 1;
+    double result = 0.0;
+    const bool is_threaded = box.size() >= min_points_for_threads;
+    if constexpr (Dim == 2) {
+#pragma omp parallel for schedule(static) reduction(max : result) if (is_threaded)
+        for (int j = rows.lo[1]; j < rows.hi[1]; ++j) {
+            result = std::max(result, g(Index<2>{rows.lo[0], j}));
+        }
+    } else {
+#pragma omp parallel for schedule(static) reduction(max : result) if (is_threaded)
+        for (int k = rows.lo[2]; k < rows.hi[2]; ++k) {
+            for (int j = rows.lo[1]; j < rows.hi[1]; ++j) {
+                result = std::max(result, g(Index<3>{rows.lo[0], j, k}));
             }
         }
     }

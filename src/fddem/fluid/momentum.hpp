@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The discrete momentum equations (7)–(8) on the staggered grid, one system per velocity
+/// component: a_P u_P = Σ a_nb u_nb − (p_P − p_W) ΔV/h + b, and their approximate solution.
+
+#include "fddem/fluid/boundary_conditions.hpp"
+#include "fddem/fluid/fluid_state.hpp"
+
+#include <array>
+
+namespace fddem {
+
+/// Coefficients of one component's system. a_nb[2d] is the low neighbour along d, a_nb[2d+1]
+/// the high one. b holds everything but the pressure gradient (time level n, body force,
+/// deferred convection correction, wall terms).
+template <int Dim>
+struct MomentumSystem {
+    explicit MomentumSystem(const MacGrid<Dim>& grid) : a_p(grid), b(grid), u_old(grid)
+    {
+        for (auto& a : a_nb) {
+            a = GridArray<Dim>(grid);
+        }
+    }
+    GridArray<Dim> a_p;
+    std::array<GridArray<Dim>, 2 * Dim> a_nb;
+    GridArray<Dim> b;
+    GridArray<Dim> u_old; ///< the iterate at assembly, for under-relaxation
+};
+
+struct MomentumSettings {
+    double dt;                   ///< Δt [s]
+    ConvectionScheme convection; ///< see ConvectionScheme
+    double relaxation;           ///< α_u in (0, 1]
+    int sweeps;                  ///< red-black Gauss–Seidel sweeps per outer iteration
+};
+
+/// Assembles eqs. (7)–(8) for component `axis` about the current iterate `state.u` (Picard:
+/// fluxes from the latest iterate), implicit Euler in time. Requires the ghosts of state.u
+/// filled. Returns the normalised residual of the current iterate, max |r / a_P| [m/s].
+template <int Dim>
+[[nodiscard]] double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                                       const FluidProperties& fluid,
+                                       const MomentumSettings& settings,
+                                       const FluidState<Dim>& state, int axis,
+                                       MomentumSystem<Dim>& system);
+
+/// Relaxes component `axis` of state.u towards the solution of its system with `sweeps`
+/// red-black Gauss–Seidel sweeps, with velocity under-relaxation (Patankar's a_P/α form).
+/// Ghosts are refilled between sweeps (periodic images lag by one colour).
+template <int Dim>
+void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                    const MomentumSettings& settings, const MomentumSystem<Dim>& system, int axis,
+                    FluidState<Dim>& state);
+
+} // namespace fddem

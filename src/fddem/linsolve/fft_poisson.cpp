@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/linsolve/fft_poisson.hpp"
+
+#include "fddem/core/errors.hpp"
+#include "fddem/grid/loops.hpp"
+
+#include <fftw3.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace fddem {
+
+template <int Dim>
+struct FftPoissonSolver<Dim>::Plans {
+    fftw_plan forward = nullptr;
+    fftw_plan backward = nullptr;
+    Plans() = default;
+    Plans(const Plans&) = delete;
+    Plans& operator=(const Plans&) = delete;
+    Plans(Plans&&) = delete;
+    Plans& operator=(Plans&&) = delete;
+    ~Plans()
+    {
+        if (forward != nullptr) {
+            fftw_destroy_plan(forward);
+        }
+        if (backward != nullptr) {
+            fftw_destroy_plan(backward);
+        }
+    }
+};
+
+namespace {
+
+/// Eigenvalue of the 1-D three-point second difference for mode m of n cells of size h:
+/// periodic (real Fourier, half-complex storage: modes m and n − m share a frequency)
+/// λ = −(2 − 2 cos(2πk/n))/h², k = min(m, n − m); zero-gradient walls (DCT-II)
+/// λ = −(2 − 2 cos(πm/n))/h².
+double eigenvalue(int m, int n, double h, bool is_periodic)
+{
+    const double theta = is_periodic ? 2.0 * std::numbers::pi * std::min(m, n - m) / n
+                                     : std::numbers::pi * m / n;
+    return -(2.0 - 2.0 * std::cos(theta)) / (h * h);
+}
+
+} // namespace
+
+template <int Dim>
+FftPoissonSolver<Dim>::FftPoissonSolver(const MacGrid<Dim>& grid,
+                                        const std::array<bool, Dim>& is_periodic)
+    : grid_(grid), plans_(std::make_unique<Plans>())
+{
+    const std::size_t n_total = grid.n_cells();
+    work_.assign(n_total, 0.0);
+    inverse_eigen_.assign(n_total, 0.0);
+
+    // FFTW is row-major (first dimension slowest); our x is fastest, so dims are reversed.
+    std::array<int, Dim> dims{};
+    std::array<fftw_r2r_kind, Dim> forward_kind{};
+    std::array<fftw_r2r_kind, Dim> backward_kind{};
+    double normalisation = 1.0; // FFTW transforms are unnormalised
+    for (int d = 0; d < Dim; ++d) {
+        const auto slot = static_cast<std::size_t>(Dim - 1 - d);
+        const bool periodic = is_periodic[static_cast<std::size_t>(d)];
+        dims[slot] = grid.cells(d);
+        forward_kind[slot] = periodic ? FFTW_R2HC : FFTW_REDFT10;
+        backward_kind[slot] = periodic ? FFTW_HC2R : FFTW_REDFT01;
+        normalisation *= periodic ? grid.cells(d) : 2.0 * grid.cells(d);
+    }
+    // FFTW_ESTIMATE, not FFTW_MEASURE: measured plans may differ between runs and so change
+    // results in the last bits; reruns must be bit-identical (issue 5).
+    plans_->forward = fftw_plan_r2r(Dim, dims.data(), work_.data(), work_.data(),
+                                    forward_kind.data(), FFTW_ESTIMATE);
+    plans_->backward = fftw_plan_r2r(Dim, dims.data(), work_.data(), work_.data(),
+                                     backward_kind.data(), FFTW_ESTIMATE);
+    if (plans_->forward == nullptr || plans_->backward == nullptr) {
+        throw InternalError("FFTW could not plan the Poisson transforms");
+    }
+
+    // Serial walk in the contiguous (x fastest) order of work_.
+    std::array<int, Dim> m{};
+    for (std::size_t flat = 0; flat < n_total; ++flat) {
+        double lambda = 0.0;
+        for (int d = 0; d < Dim; ++d) {
+            lambda += eigenvalue(m[static_cast<std::size_t>(d)], grid.cells(d), grid.spacing(d),
+                                 is_periodic[static_cast<std::size_t>(d)]);
+        }
+        // The constant mode (λ = 0) is the null space: its coefficient is set to zero,
+        // which removes the mean of rhs and returns the zero-mean solution.
+        inverse_eigen_[flat] = flat == 0 ? 0.0 : 1.0 / (lambda * normalisation);
+        for (int d = 0; d < Dim; ++d) {
+            auto& md = m[static_cast<std::size_t>(d)];
+            if (++md < grid.cells(d)) {
+                break;
+            }
+            md = 0;
+        }
+    }
+}
+
+template <int Dim>
+FftPoissonSolver<Dim>::~FftPoissonSolver() = default;
+
+template <int Dim>
+void FftPoissonSolver<Dim>::solve(const CellField<Dim>& rhs, CellField<Dim>& phi)
+{
+    const Box<Dim> box = grid_.owned_cells();
+    const int nx = box.extent(0);
+    // Gather the owned cells into the contiguous work array, row by row.
+    for_each_row(box, [&](const Index<Dim>& row) {
+        std::size_t flat = 0;
+        std::size_t stride = 1;
+        for (int d = 0; d < Dim; ++d) {
+            flat += static_cast<std::size_t>(row[static_cast<std::size_t>(d)]) * stride;
+            stride *= static_cast<std::size_t>(grid_.cells(d));
+        }
+        const double* source = rhs.data() + grid_.offset(row);
+        std::copy(source, source + nx, work_.begin() + static_cast<std::ptrdiff_t>(flat));
+    });
+    fftw_execute(plans_->forward);
+    for (std::size_t k = 0; k < work_.size(); ++k) {
+        work_[k] *= inverse_eigen_[k];
+    }
+    fftw_execute(plans_->backward);
+    for_each_row(box, [&](const Index<Dim>& row) {
+        std::size_t flat = 0;
+        std::size_t stride = 1;
+        for (int d = 0; d < Dim; ++d) {
+            flat += static_cast<std::size_t>(row[static_cast<std::size_t>(d)]) * stride;
+            stride *= static_cast<std::size_t>(grid_.cells(d));
+        }
+        const auto begin = work_.begin() + static_cast<std::ptrdiff_t>(flat);
+        std::copy(begin, begin + nx, phi.data() + grid_.offset(row));
+    });
+}
+
+template class FftPoissonSolver<2>;
+template class FftPoissonSolver<3>;
+
+} // namespace fddem

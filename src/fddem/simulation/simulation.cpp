@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: MIT
+// The time step (DESIGN.md §1, STYLE.md §2): implicit Euler, SIMPLE outer iterations.
+
+#include "fddem/simulation/simulation.hpp"
+
+#include "fddem/core/errors.hpp"
+#include "fddem/fluid/pressure_correction.hpp"
+#include "fddem/grid/loops.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace fddem {
+namespace {
+
+template <int Dim>
+MacGrid<Dim> make_grid(const CaseConfig& config)
+{
+    if (config.dimension != Dim || config.size.size() != static_cast<std::size_t>(Dim) ||
+        config.cells.size() != static_cast<std::size_t>(Dim)) {
+        throw InputError(config.source_file, 0, "domain.size",
+                         "the case is " + std::to_string(config.dimension) +
+                             "-dimensional, not " + std::to_string(Dim) + "-dimensional");
+    }
+    Index<Dim> cells{};
+    Vec<Dim> origin = Vec<Dim>::Zero();
+    Vec<Dim> length;
+    for (int d = 0; d < Dim; ++d) {
+        const auto k = static_cast<std::size_t>(d);
+        cells[k] = config.cells[k];
+        length[d] = config.size[k];
+        if (config.origin.size() == static_cast<std::size_t>(Dim)) {
+            origin[d] = config.origin[k];
+        }
+    }
+    return MacGrid<Dim>(cells, origin, length);
+}
+
+template <int Dim>
+BoundaryConditions<Dim> make_boundary_conditions(const CaseConfig& config)
+{
+    BoundaryConditions<Dim> bc = BoundaryConditions<Dim>::closed_box();
+    for (int d = 0; d < Dim; ++d) {
+        const auto k = static_cast<std::size_t>(d);
+        bc.is_periodic[k] = k < config.periodic.size() && config.periodic[k];
+        if (k >= config.wall_velocity.size()) {
+            continue;
+        }
+        for (std::size_t side = 0; side < 2; ++side) {
+            const std::vector<double>& w = config.wall_velocity[k][side];
+            for (int a = 0; a < Dim && static_cast<std::size_t>(a) < w.size(); ++a) {
+                bc.wall_velocity[k][side][a] = w[static_cast<std::size_t>(a)];
+            }
+        }
+    }
+    return bc;
+}
+
+template <int Dim>
+double max_speed(const MacGrid<Dim>& grid, const FaceField<Dim>& u)
+{
+    double result = 0.0;
+    for (int a = 0; a < Dim; ++a) {
+        result = std::max(result, max_over(grid.face_box(a), [&](const Index<Dim>& c) {
+                              return std::abs(u[a](c));
+                          }));
+    }
+    return result;
+}
+
+using Seconds = std::chrono::duration<double>;
+
+} // namespace
+
+template <int Dim>
+Simulation<Dim>::Simulation(const CaseConfig& config)
+    : config_(config), grid_(make_grid<Dim>(config)),
+      bc_(make_boundary_conditions<Dim>(config)),
+      properties_{config.density, config.viscosity},
+      momentum_settings_{config.dt,
+                         config.convection == "upwind" ? ConvectionScheme::upwind
+                                                       : ConvectionScheme::central,
+                         config.velocity_relaxation, config.momentum_sweeps},
+      state_(grid_), length_scale_(*std::min_element(config.size.begin(), config.size.end()))
+{
+    for (int a = 0; a < Dim; ++a) {
+        systems_.emplace_back(grid_);
+    }
+    poisson_ = make_poisson_solver<Dim>(
+        grid_, bc_.is_periodic,
+        PoissonSettings{config.pressure_solver, config.linear_tolerance,
+                        config.linear_max_iterations});
+    clock_.dt = config.dt;
+    Vec<Dim> force = Vec<Dim>::Zero();
+    for (int a = 0; a < Dim && static_cast<std::size_t>(a) < config.body_force.size(); ++a) {
+        force[a] = config.body_force[static_cast<std::size_t>(a)];
+    }
+    set_uniform_body_force(force);
+    fill_velocity_ghosts(grid_, bc_, state_.u);
+    fill_cell_ghosts(grid_, bc_, state_.p);
+}
+
+template <int Dim>
+void Simulation<Dim>::set_uniform_body_force(const Vec<Dim>& force)
+{
+    for (int a = 0; a < Dim; ++a) {
+        state_.body_force[a].fill(force[a]);
+    }
+}
+
+template <int Dim>
+double Simulation<Dim>::reference_velocity() const
+{
+    double wall = 0.0;
+    for (int d = 0; d < Dim; ++d) {
+        for (int side = 0; side < 2; ++side) {
+            wall = std::max(wall, bc_.wall(d, side).cwiseAbs().maxCoeff());
+        }
+    }
+    // The floor only avoids 0/0 for a fluid entirely at rest (all residuals are then zero).
+    return std::max({max_speed(grid_, state_.u), wall, std::numeric_limits<double>::min()});
+}
+
+template <int Dim>
+StepReport Simulation<Dim>::advance()
+{
+    const double dt = clock_.dt;
+    for (int a = 0; a < Dim; ++a) {
+        state_.u_n[a] = state_.u[a]; // keep u^n
+    }
+    const double cell = grid_.spacing().minCoeff();
+
+    StepReport report;
+    double mass_residual = compute_divergence(grid_, state_.u, state_.divergence) * cell /
+                           reference_velocity();
+    for (int k = 1; k <= config_.max_outer_iterations; ++k) {
+        const double velocity_scale = reference_velocity();
+
+        // eqs. (7)–(8): momentum coefficients about the latest iterate, and its residual.
+        auto start = std::chrono::steady_clock::now();
+        double momentum_residual = 0.0;
+        for (int a = 0; a < Dim; ++a) {
+            momentum_residual =
+                std::max(momentum_residual,
+                         assemble_momentum(grid_, bc_, properties_, momentum_settings_, state_, a,
+                                           systems_[static_cast<std::size_t>(a)]));
+        }
+        report.momentum_residual = momentum_residual / velocity_scale;
+        report.mass_residual = mass_residual;
+        if (!std::isfinite(report.momentum_residual)) {
+            throw NumericalError(clock_.step + 1, clock_.time + dt, "momentum equations",
+                                 "the momentum residual is not finite: the flow has blown up");
+        }
+        if (k > 1 && report.momentum_residual < config_.tolerance &&
+            mass_residual < config_.tolerance) {
+            report.is_converged = true;
+            momentum_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
+            break;
+        }
+        for (int a = 0; a < Dim; ++a) {
+            solve_momentum(grid_, bc_, momentum_settings_, systems_[static_cast<std::size_t>(a)],
+                           a, state_); // → u*
+        }
+        momentum_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
+
+        // eqs. (9)–(12): pressure correction, then p and u corrected.
+        start = std::chrono::steady_clock::now();
+        const double max_divergence = correct_pressure_and_velocity(
+            grid_, bc_, properties_, dt, config_.pressure_relaxation, *poisson_, state_);
+        pressure_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
+        mass_residual = max_divergence * cell / velocity_scale;
+        report.outer_iterations = k;
+    }
+
+    const double velocity_scale = reference_velocity();
+    double courant = 0.0;
+    double change = 0.0;
+    for (int a = 0; a < Dim; ++a) {
+        const GridArray<Dim>& ua = state_.u[a];
+        const GridArray<Dim>& ua_n = state_.u_n[a];
+        courant = std::max(courant, max_over(grid_.face_box(a), [&](const Index<Dim>& c) {
+                               return std::abs(ua(c)) * dt / grid_.spacing(a);
+                           }));
+        change = std::max(change, max_over(grid_.face_box(a), [&](const Index<Dim>& c) {
+                              return std::abs(ua(c) - ua_n(c));
+                          }));
+    }
+    report.courant = courant;
+    report.rate_of_change = change / dt * length_scale_ / (velocity_scale * velocity_scale);
+    clock_.time += dt;
+    ++clock_.step;
+    return report;
+}
+
+template <int Dim>
+bool Simulation<Dim>::is_finished(const StepReport& last) const
+{
+    if (clock_.step >= config_.max_steps) {
+        return true;
+    }
+    if (config_.end_time && clock_.time >= *config_.end_time - 0.5 * clock_.dt) {
+        return true;
+    }
+    return config_.steady_tolerance && clock_.step > 1 &&
+           last.rate_of_change < *config_.steady_tolerance;
+}
+
+template class Simulation<2>;
+template class Simulation<3>;
+
+} // namespace fddem

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Simulation<Dim> owns everything of one run and advances it one time step at a time.
+
+#include "fddem/core/logger.hpp"
+#include "fddem/fluid/boundary_conditions.hpp"
+#include "fddem/fluid/fluid_state.hpp"
+#include "fddem/fluid/momentum.hpp"
+#include "fddem/grid/mac_grid.hpp"
+#include "fddem/linsolve/poisson_solver.hpp"
+#include "fddem/simulation/case_config.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace fddem {
+
+/// What one time step did.
+struct StepReport {
+    int outer_iterations = 0;
+    bool is_converged = false;      ///< residuals below tolerance within the iteration limit
+    double mass_residual = 0.0;     ///< max |∇·u*| h / U_ref of the last outer iteration
+    double momentum_residual = 0.0; ///< max |r/a_P| / U_ref of the accepted iterate
+    double courant = 0.0;           ///< max_d max |u_d| Δt / h_d after the step
+    double rate_of_change = 0.0;    ///< max |u^{n+1} − u^n| / Δt · L / U_ref² (steady check)
+};
+
+/// Time and step counters.
+struct Clock {
+    double time = 0.0; ///< [s]
+    long step = 0;
+    double dt = 0.0; ///< [s]
+};
+
+template <int Dim>
+class Simulation {
+public:
+    /// Builds the run from a checked case. Throws InputError if the case's dimension is not Dim.
+    explicit Simulation(const CaseConfig& config);
+
+    /// One implicit-Euler time step: SIMPLE outer iterations (7)–(12) to convergence.
+    StepReport advance();
+
+    /// True when the end time or the step limit is reached, or the flow is steady.
+    [[nodiscard]] bool is_finished(const StepReport& last) const;
+
+    [[nodiscard]] const MacGrid<Dim>& grid() const noexcept { return grid_; }
+    [[nodiscard]] const BoundaryConditions<Dim>& boundary_conditions() const noexcept
+    {
+        return bc_;
+    }
+    [[nodiscard]] const FluidState<Dim>& fluid() const noexcept { return state_; }
+    [[nodiscard]] FluidState<Dim>& fluid() noexcept { return state_; }
+    [[nodiscard]] const FluidProperties& fluid_properties() const noexcept { return properties_; }
+    [[nodiscard]] const Clock& clock() const noexcept { return clock_; }
+    [[nodiscard]] const CaseConfig& config() const noexcept { return config_; }
+    [[nodiscard]] const PoissonSolver<Dim>& pressure_solver() const noexcept { return *poisson_; }
+    /// Seconds spent so far in the momentum and pressure stages.
+    [[nodiscard]] double momentum_seconds() const noexcept { return momentum_seconds_; }
+    [[nodiscard]] double pressure_seconds() const noexcept { return pressure_seconds_; }
+
+    /// Sets a uniform force per unit volume on the fluid [N/m³] (e.g. to drive a channel).
+    void set_uniform_body_force(const Vec<Dim>& force);
+
+private:
+    [[nodiscard]] double reference_velocity() const;
+
+    CaseConfig config_;
+    MacGrid<Dim> grid_;
+    BoundaryConditions<Dim> bc_;
+    FluidProperties properties_;
+    MomentumSettings momentum_settings_;
+    FluidState<Dim> state_;
+    std::vector<MomentumSystem<Dim>> systems_;
+    std::unique_ptr<PoissonSolver<Dim>> poisson_;
+    Clock clock_;
+    double length_scale_; ///< smallest box side [m], for the steady-state measure
+    double momentum_seconds_ = 0.0;
+    double pressure_seconds_ = 0.0;
+};
+
+} // namespace fddem

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// Lid-driven cavity at Re = 100 against Ghia, Ghia & Shin (1982), Tables I and II.
+
+#include "fddem/simulation/simulation.hpp"
+
+#include "support/case_builders.hpp"
+#include "support/reference_csv.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace fddem {
+namespace {
+
+/// u on the vertical centreline x = 0.5 at height y (u-faces at x = i h; y linear between
+/// cell centres, wall values at y = 0 and 1).
+double u_on_vertical_centerline(const Simulation<2>& sim, double y)
+{
+    const auto& grid = sim.grid();
+    const int n = grid.cells(1);
+    const int i = grid.cells(0) / 2;
+    const double h = grid.spacing(1);
+    const double s = y / h - 0.5; // cell-centre coordinate
+    if (s <= 0.0) {
+        return (1.0 + s) * sim.fluid().u[0](Index<2>{i, 0}) + (-s) * 0.0;
+    }
+    if (s >= n - 1) {
+        const double t = s - (n - 1); // 0 … 0.5, wall at t = 0.5
+        return (1.0 - 2.0 * t) * sim.fluid().u[0](Index<2>{i, n - 1}) + 2.0 * t * 1.0;
+    }
+    const int j = static_cast<int>(std::floor(s));
+    const double t = s - j;
+    return (1.0 - t) * sim.fluid().u[0](Index<2>{i, j}) + t * sim.fluid().u[0](Index<2>{i, j + 1});
+}
+
+double v_on_horizontal_centerline(const Simulation<2>& sim, double x)
+{
+    const auto& grid = sim.grid();
+    const int n = grid.cells(0);
+    const int j = grid.cells(1) / 2;
+    const double h = grid.spacing(0);
+    const double s = x / h - 0.5;
+    if (s <= 0.0) {
+        return (1.0 + s) * sim.fluid().u[1](Index<2>{0, j});
+    }
+    if (s >= n - 1) {
+        const double t = s - (n - 1);
+        return (1.0 - 2.0 * t) * sim.fluid().u[1](Index<2>{n - 1, j});
+    }
+    const int i = static_cast<int>(std::floor(s));
+    const double t = s - i;
+    return (1.0 - t) * sim.fluid().u[1](Index<2>{i, j}) + t * sim.fluid().u[1](Index<2>{i + 1, j});
+}
+
+TEST(LidDrivenCavity, Re100At64MatchesGhiaCentrelines)
+{
+    const int n = 64;
+    CaseConfig config = test::cavity_config(n, 100.0, 1.0 / 64, 100.0);
+    config.steady_tolerance = 1e-5;
+    Simulation<2> sim(config);
+    StepReport report;
+    do {
+        report = sim.advance();
+    } while (!sim.is_finished(report));
+    const std::string dir = std::string(FDDEM_SOURCE_DIR) + "/cases/verification/cavity_re100/";
+    double max_u = 0.0;
+    for (const auto& [y, u] : test::read_two_columns(dir + "reference/ghia1982_u_vertical_centerline.csv")) {
+        max_u = std::max(max_u, std::abs(u_on_vertical_centerline(sim, y) - u));
+    }
+    double max_v = 0.0;
+    for (const auto& [x, v] : test::read_two_columns(dir + "reference/ghia1982_v_horizontal_centerline.csv")) {
+        max_v = std::max(max_v, std::abs(v_on_horizontal_centerline(sim, x) - v));
+    }
+    RecordProperty("max_u_deviation", std::to_string(max_u));
+    RecordProperty("max_v_deviation", std::to_string(max_v));
+    std::printf("steps %ld time %.3f  max|u-ghia| %.5f  max|v-ghia| %.5f\n", sim.clock().step,
+                sim.clock().time, max_u, max_v);
+    EXPECT_LT(max_u, 0.01);
+    EXPECT_LT(max_v, 0.01);
+}
+
+} // namespace
+} // namespace fddem
