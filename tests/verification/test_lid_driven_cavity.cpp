@@ -3,13 +3,13 @@
 
 #include "fddem/simulation/simulation.hpp"
 
-#include "support/case_builders.hpp"
-#include "support/reference_csv.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
+
+#include "support/case_builders.hpp"
+#include "support/reference_csv.hpp"
 
 namespace fddem {
 namespace {
@@ -66,11 +66,13 @@ TEST(LidDrivenCavity, Re100At64MatchesGhiaCentrelines)
     } while (!sim.is_finished(report));
     const std::string dir = std::string(FDDEM_SOURCE_DIR) + "/cases/verification/cavity_re100/";
     double max_u = 0.0;
-    for (const auto& [y, u] : test::read_two_columns(dir + "reference/ghia1982_u_vertical_centerline.csv")) {
+    for (const auto& [y, u] :
+         test::read_two_columns(dir + "reference/ghia1982_u_vertical_centerline.csv")) {
         max_u = std::max(max_u, std::abs(u_on_vertical_centerline(sim, y) - u));
     }
     double max_v = 0.0;
-    for (const auto& [x, v] : test::read_two_columns(dir + "reference/ghia1982_v_horizontal_centerline.csv")) {
+    for (const auto& [x, v] :
+         test::read_two_columns(dir + "reference/ghia1982_v_horizontal_centerline.csv")) {
         max_v = std::max(max_v, std::abs(v_on_horizontal_centerline(sim, x) - v));
     }
     RecordProperty("max_u_deviation", std::to_string(max_u));

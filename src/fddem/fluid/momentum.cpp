@@ -51,15 +51,14 @@ double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>
     std::array<AxisTerms, Dim> terms{};
     for (int d = 0; d < Dim; ++d) {
         const double area = volume / grid.spacing(d);
-        terms[static_cast<std::size_t>(d)] = {
-            grid.stride(d),
-            0.5 * rho * area,
-            fluid.viscosity * area / grid.spacing(d),
-            state.u[d].data(),
-            bc.wall(d, 0)[axis],
-            bc.wall(d, 1)[axis],
-            d != axis && !bc.periodic(d),
-            grid.cells(d)};
+        terms[static_cast<std::size_t>(d)] = {grid.stride(d),
+                                              0.5 * rho * area,
+                                              fluid.viscosity * area / grid.spacing(d),
+                                              state.u[d].data(),
+                                              bc.wall(d, 0)[axis],
+                                              bc.wall(d, 1)[axis],
+                                              d != axis && !bc.periodic(d),
+                                              grid.cells(d)};
     }
     double* a_p_out = system.a_p.data();
     double* b_out = system.b.data();

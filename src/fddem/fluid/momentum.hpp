@@ -38,11 +38,10 @@ struct MomentumSettings {
 /// fluxes from the latest iterate), implicit Euler in time. Requires the ghosts of state.u
 /// filled. Returns the normalised residual of the current iterate, max |r / a_P| [m/s].
 template <int Dim>
-[[nodiscard]] double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                                       const FluidProperties& fluid,
-                                       const MomentumSettings& settings,
-                                       const FluidState<Dim>& state, int axis,
-                                       MomentumSystem<Dim>& system);
+[[nodiscard]] double
+assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                  const FluidProperties& fluid, const MomentumSettings& settings,
+                  const FluidState<Dim>& state, int axis, MomentumSystem<Dim>& system);
 
 /// Relaxes component `axis` of state.u towards the solution of its system with `sweeps`
 /// red-black Gauss–Seidel sweeps, with velocity under-relaxation (Patankar's a_P/α form).

@@ -39,8 +39,8 @@ namespace {
 /// λ = −(2 − 2 cos(πm/n))/h².
 double eigenvalue(int m, int n, double h, bool is_periodic)
 {
-    const double theta = is_periodic ? 2.0 * std::numbers::pi * std::min(m, n - m) / n
-                                     : std::numbers::pi * m / n;
+    const double theta =
+        is_periodic ? 2.0 * std::numbers::pi * std::min(m, n - m) / n : std::numbers::pi * m / n;
     return -(2.0 - 2.0 * std::cos(theta)) / (h * h);
 }
 
@@ -48,7 +48,7 @@ double eigenvalue(int m, int n, double h, bool is_periodic)
 
 template <int Dim>
 FftPoissonSolver<Dim>::FftPoissonSolver(const MacGrid<Dim>& grid,
-                                        const std::array<bool, Dim>& is_periodic)
+                                        const std::array<bool, Dim>& is_periodic, bool is_measured)
     : grid_(grid), plans_(std::make_unique<Plans>())
 {
     const std::size_t n_total = grid.n_cells();
@@ -68,12 +68,13 @@ FftPoissonSolver<Dim>::FftPoissonSolver(const MacGrid<Dim>& grid,
         backward_kind[slot] = periodic ? FFTW_HC2R : FFTW_REDFT01;
         normalisation *= periodic ? grid.cells(d) : 2.0 * grid.cells(d);
     }
-    // FFTW_ESTIMATE, not FFTW_MEASURE: measured plans may differ between runs and so change
-    // results in the last bits; reruns must be bit-identical (issue 5).
-    plans_->forward = fftw_plan_r2r(Dim, dims.data(), work_.data(), work_.data(),
-                                    forward_kind.data(), FFTW_ESTIMATE);
-    plans_->backward = fftw_plan_r2r(Dim, dims.data(), work_.data(), work_.data(),
-                                     backward_kind.data(), FFTW_ESTIMATE);
+    // Measured plans are faster but may differ between processes (see PoissonSettings).
+    // Planning overwrites work_, which holds nothing yet.
+    const unsigned flags = is_measured ? FFTW_MEASURE : FFTW_ESTIMATE;
+    plans_->forward =
+        fftw_plan_r2r(Dim, dims.data(), work_.data(), work_.data(), forward_kind.data(), flags);
+    plans_->backward =
+        fftw_plan_r2r(Dim, dims.data(), work_.data(), work_.data(), backward_kind.data(), flags);
     if (plans_->forward == nullptr || plans_->backward == nullptr) {
         throw InternalError("FFTW could not plan the Poisson transforms");
     }

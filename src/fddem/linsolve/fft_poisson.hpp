@@ -17,7 +17,8 @@ namespace fddem {
 template <int Dim>
 class FftPoissonSolver final : public PoissonSolver<Dim> {
 public:
-    FftPoissonSolver(const MacGrid<Dim>& grid, const std::array<bool, Dim>& is_periodic);
+    FftPoissonSolver(const MacGrid<Dim>& grid, const std::array<bool, Dim>& is_periodic,
+                     bool is_measured = false);
     ~FftPoissonSolver() override;
     FftPoissonSolver(const FftPoissonSolver&) = delete;
     FftPoissonSolver& operator=(const FftPoissonSolver&) = delete;

@@ -13,7 +13,7 @@ std::unique_ptr<PoissonSolver<Dim>> make_poisson_solver(const MacGrid<Dim>& grid
     // Every boundary fddem has today (walls, periodic pairs) keeps the pressure-correction
     // operator constant-coefficient on a uniform box, so "auto" is always the direct solver.
     if (settings.kind == "auto" || settings.kind == "fft") {
-        return std::make_unique<FftPoissonSolver<Dim>>(grid, is_periodic);
+        return std::make_unique<FftPoissonSolver<Dim>>(grid, is_periodic, settings.is_fft_measured);
     }
     throw InputError("", 0, "simple.pressure_solver",
                      "unknown pressure solver '" + settings.kind +

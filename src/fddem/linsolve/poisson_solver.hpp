@@ -37,6 +37,10 @@ struct PoissonSettings {
     std::string kind = "auto"; ///< "auto" (FFT: every boundary here allows it), "fft", "hypre"
     double tolerance = 1e-10;  ///< relative residual, iterative solvers
     int max_iterations = 200;
+    /// FFT plans by measurement (FFTW_MEASURE: ≈ 1.7× faster transforms at 256², but the plan
+    /// FFTW picks may differ between processes, and with it the last bits of the answer) or by
+    /// estimate (FFTW_ESTIMATE: the same plan, so bit-identical reruns).
+    bool is_fft_measured = true;
 };
 
 /// Builds the solver named in `settings` for a grid whose axes are periodic where

@@ -21,8 +21,8 @@ MacGrid<Dim> make_grid(const CaseConfig& config)
     if (config.dimension != Dim || config.size.size() != static_cast<std::size_t>(Dim) ||
         config.cells.size() != static_cast<std::size_t>(Dim)) {
         throw InputError(config.source_file, 0, "domain.size",
-                         "the case is " + std::to_string(config.dimension) +
-                             "-dimensional, not " + std::to_string(Dim) + "-dimensional");
+                         "the case is " + std::to_string(config.dimension) + "-dimensional, not " +
+                             std::to_string(Dim) + "-dimensional");
     }
     Index<Dim> cells{};
     Vec<Dim> origin = Vec<Dim>::Zero();
@@ -63,9 +63,8 @@ double max_speed(const MacGrid<Dim>& grid, const FaceField<Dim>& u)
 {
     double result = 0.0;
     for (int a = 0; a < Dim; ++a) {
-        result = std::max(result, max_over(grid.face_box(a), [&](const Index<Dim>& c) {
-                              return std::abs(u[a](c));
-                          }));
+        result = std::max(result, max_over(grid.face_box(a),
+                                           [&](const Index<Dim>& c) { return std::abs(u[a](c)); }));
     }
     return result;
 }
@@ -77,8 +76,7 @@ using Seconds = std::chrono::duration<double>;
 template <int Dim>
 Simulation<Dim>::Simulation(const CaseConfig& config)
     : config_(config), grid_(make_grid<Dim>(config)),
-      bc_(make_boundary_conditions<Dim>(config)),
-      properties_{config.density, config.viscosity},
+      bc_(make_boundary_conditions<Dim>(config)), properties_{config.density, config.viscosity},
       momentum_settings_{config.dt,
                          config.convection == "upwind" ? ConvectionScheme::upwind
                                                        : ConvectionScheme::central,
@@ -88,10 +86,10 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
     for (int a = 0; a < Dim; ++a) {
         systems_.emplace_back(grid_);
     }
-    poisson_ = make_poisson_solver<Dim>(
-        grid_, bc_.is_periodic,
-        PoissonSettings{config.pressure_solver, config.linear_tolerance,
-                        config.linear_max_iterations});
+    poisson_ =
+        make_poisson_solver<Dim>(grid_, bc_.is_periodic,
+                                 PoissonSettings{config.pressure_solver, config.linear_tolerance,
+                                                 config.linear_max_iterations});
     clock_.dt = config.dt;
     Vec<Dim> force = Vec<Dim>::Zero();
     for (int a = 0; a < Dim && static_cast<std::size_t>(a) < config.body_force.size(); ++a) {
@@ -133,8 +131,8 @@ StepReport Simulation<Dim>::advance()
     const double cell = grid_.spacing().minCoeff();
 
     StepReport report;
-    double mass_residual = compute_divergence(grid_, state_.u, state_.divergence) * cell /
-                           reference_velocity();
+    double mass_residual =
+        compute_divergence(grid_, state_.u, state_.divergence) * cell / reference_velocity();
     for (int k = 1; k <= config_.max_outer_iterations; ++k) {
         const double velocity_scale = reference_velocity();
 
@@ -160,8 +158,8 @@ StepReport Simulation<Dim>::advance()
             break;
         }
         for (int a = 0; a < Dim; ++a) {
-            solve_momentum(grid_, bc_, momentum_settings_, systems_[static_cast<std::size_t>(a)],
-                           a, state_); // → u*
+            solve_momentum(grid_, bc_, momentum_settings_, systems_[static_cast<std::size_t>(a)], a,
+                           state_); // → u*
         }
         momentum_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
 
