@@ -21,10 +21,14 @@
 
 namespace fddem {
 
-template <int Dim>
-double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                         const FluidProperties& fluid, const MomentumSettings& settings,
-                         const FluidState<Dim>& state, int axis, MomentumSystem<Dim>& system)
+namespace {
+
+/// The assembly for one component; `axis` is a template parameter so that the branches on
+/// it resolve at compile time and the row loop can vectorise.
+template <int Dim, int axis>
+double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                          const FluidProperties& fluid, const MomentumSettings& settings,
+                          const FluidState<Dim>& state, MomentumSystem<Dim>& system)
 {
     const Box<Dim> box = unknown_faces(grid, bc, axis);
     const double volume = grid.cell_volume();
@@ -135,6 +139,24 @@ double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>
         }
         return row_max;
     });
+}
+
+} // namespace
+
+template <int Dim>
+double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                         const FluidProperties& fluid, const MomentumSettings& settings,
+                         const FluidState<Dim>& state, int axis, MomentumSystem<Dim>& system)
+{
+    if (axis == 0) {
+        return assemble_component<Dim, 0>(grid, bc, fluid, settings, state, system);
+    }
+    if constexpr (Dim == 3) {
+        if (axis == 2) {
+            return assemble_component<Dim, 2>(grid, bc, fluid, settings, state, system);
+        }
+    }
+    return assemble_component<Dim, 1>(grid, bc, fluid, settings, state, system);
 }
 
 template <int Dim>

@@ -50,7 +50,15 @@ public:
         return bc_;
     }
     [[nodiscard]] const FluidState<Dim>& fluid() const noexcept { return state_; }
-    [[nodiscard]] FluidState<Dim>& fluid() noexcept { return state_; }
+    /// Mutable access (initial conditions, forcing in tests). Call before the first step, or
+    /// call invalidate_assembly() after changing anything between steps.
+    [[nodiscard]] FluidState<Dim>& fluid() noexcept
+    {
+        is_reusable_assembly_ = false;
+        return state_;
+    }
+    /// Forces a full momentum assembly at the start of the next step.
+    void invalidate_assembly() noexcept { is_reusable_assembly_ = false; }
     [[nodiscard]] const FluidProperties& fluid_properties() const noexcept { return properties_; }
     [[nodiscard]] const Clock& clock() const noexcept { return clock_; }
     [[nodiscard]] const CaseConfig& config() const noexcept { return config_; }
@@ -64,6 +72,7 @@ public:
 
 private:
     [[nodiscard]] double reference_velocity() const;
+    void advance_time_level_in_systems();
 
     CaseConfig config_;
     MacGrid<Dim> grid_;
@@ -71,6 +80,10 @@ private:
     FluidProperties properties_;
     MomentumSettings momentum_settings_;
     FluidState<Dim> state_;
+    FaceField<Dim> previous_level_; ///< u^{n−1}, to move the assembled b to the new level
+    /// The momentum systems were assembled about the current iterate with the same Δt and
+    /// forcing (by the convergence check that ended the last step).
+    bool is_reusable_assembly_ = false;
     std::vector<MomentumSystem<Dim>> systems_;
     std::unique_ptr<PoissonSolver<Dim>> poisson_;
     Clock clock_;
