@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# fddem's benchmark table, one command. Builds the release preset, then:
+#  1. the kernel micro-benchmarks (Google Benchmark: momentum assembly, sweep, Poisson solves);
+#  2. the lid-driven cavity (Re 100, Δt at lid Courant 0.5) on 64², 128², 256², 512² for a fixed
+#     simulated time, through `fddem run`: time per step, outer iterations per step, share of
+#     time in pressure and momentum, peak memory;
+#  3. with --openfoam: the side-by-side comparison with OpenFOAM's icoFoam on the same cavity
+#     (Re 100, N², Δt = 0.5/N, t = 20) using shared/peers/openfoam-cavity/run.sh, printing the
+#     wall-time ratio and both codes' centreline deviation from Ghia et al. (1982).
+# Options: --openfoam [N] (default N = 256), --quick (smaller table), --threads T (default 1).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/.." && pwd)"
+cd "$root"
+openfoam=0
+openfoam_n=256
+quick=0
+threads=1
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --openfoam) openfoam=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then openfoam_n="$2"; shift; fi ;;
+        --quick) quick=1 ;;
+        --threads) threads="$2"; shift ;;
+        *) echo "bench/run.sh: unknown option '$1'" >&2; exit 2 ;;
+    esac
+    shift
+done
+export OMP_NUM_THREADS="$threads"
+python=/usr/bin/python3 # Debian's, which has numpy; a pyenv python3 on PATH may not
+
+./tools/install-deps.sh >/dev/null
+cmake --preset release >/dev/null
+cmake --build --preset release --target fddem fddem_bench >/dev/null
+fddem="$root/build/release/app/fddem"
+out="$root/bench/results"
+mkdir -p "$out"
+
+echo "== kernels (OMP_NUM_THREADS=$threads)"
+"$root/build/release/bench/fddem_bench" --benchmark_min_time=0.2 2>/dev/null |
+    grep -E '^(Benchmark|-|momentum|poisson)'
+
+echo
+echo "== lid-driven cavity, Re 100, dt = 0.5/N (OMP_NUM_THREADS=$threads)"
+grids="64 128 256 512"
+end=1.0
+[ "$quick" = 1 ] && grids="64 128 256" && end=0.5
+rows=()
+for n in $grids; do
+    dir="$out/cavity_n$n"
+    dt=$($python -c "print(0.5/$n)")
+    "$fddem" run cases/verification/cavity_re100/case.toml -o "$dir" --force -q \
+        --set "domain.cells=[$n,$n]" --set "time.dt=$dt" --set "time.end=$end" \
+        --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" --set "simple.tolerance=1e-4"
+    rows+=("$n:$dir")
+done
+$python "$here/table.py" cavity "${rows[@]}"
+
+if [ "$openfoam" = 1 ]; then
+    echo
+    echo "== side by side with OpenFOAM icoFoam: cavity Re 100, ${openfoam_n}², dt = 0.5/N, t = 20"
+    if ! command -v icoFoam >/dev/null; then
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq openfoam >/dev/null
+    fi
+    peer="$out/openfoam-cavity"
+    rm -rf "$peer" && cp -r "$root/../shared/peers/openfoam-cavity" "$peer"
+    n="$openfoam_n"
+    dt=$($python -c "print(0.5/$n)") # icoFoam's: endTime/ceil(endTime·N/0.5)
+    dir="$out/cavity_fddem_n$n"
+    start=$(date +%s.%N)
+    "$fddem" run cases/verification/cavity_re100/case.toml -o "$dir" --force -q \
+        --set "domain.cells=[$n,$n]" --set "time.dt=$dt" --set "time.end=20.0" \
+        --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" --set "simple.tolerance=1e-4"
+    fddem_wall=$($python -c "import sys,time; print(f'{time.time()-float(sys.argv[1]):.2f}')" "$start")
+    (cd "$peer" && OMP_NUM_THREADS=1 ./run.sh "$n" 100 20 icoFoam >/dev/null)
+    $python "$here/table.py" openfoam "$dir" "$fddem_wall" "$peer/results" "$n" \
+        "$root/cases/verification/cavity_re100/reference"
+fi
