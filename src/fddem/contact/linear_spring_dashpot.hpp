@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Linear spring–dashpot, F = k α + c α̇ (paper, eq. (18) and the text after it).
+///
+/// For a binary collision of effective mass m (m₁m₂/(m₁+m₂), or m against a wall) the overlap
+/// obeys m α̈ + c α̇ + k α = 0: a damped oscillator with ω₀ = √(k/m), ζ = c / (2√(k m)),
+/// ω_d = ω₀√(1 − ζ²). Contact lasts half a period, t_c = π/ω_d, and the normal restitution
+/// coefficient is e = exp(−ζπ/√(1 − ζ²)) (e.g. Schäfer, Dippel & Wolf 1996, eqs. 10–11).
+/// In a 2D case k and c are per unit depth, like the masses.
+
+#include "fddem/contact/contact_model.hpp"
+
+namespace fddem {
+
+class LinearSpringDashpot {
+public:
+    struct Params {
+        double stiffness; ///< k [N/m]
+        double damping;   ///< c [N·s/m]
+    };
+
+    /// Throws InputError if k ≤ 0, c < 0, or the contact is overdamped (ζ ≥ 1: no rebound).
+    explicit LinearSpringDashpot(const Params& params, double reference_mass);
+
+    /// k and c that give restitution `restitution` (0 < e ≤ 1) and contact duration
+    /// `contact_time` [s] for a collision of effective mass `mass` [kg].
+    [[nodiscard]] static Params from_restitution(double restitution, double contact_time,
+                                                 double mass);
+
+    [[nodiscard]] double normal_force(NormalContact c) const noexcept
+    {
+        return params_.stiffness * c.overlap + params_.damping * c.overlap_rate;
+    }
+    /// t_c = π/ω_d for effective mass `mass` [s].
+    [[nodiscard]] double contact_time(double mass) const;
+    /// e = exp(−ζπ/√(1 − ζ²)) for effective mass `mass`.
+    [[nodiscard]] double restitution(double mass) const;
+    [[nodiscard]] const Params& params() const noexcept { return params_; }
+
+private:
+    Params params_;
+};
+
+static_assert(ContactModel<LinearSpringDashpot>);
+
+} // namespace fddem
