@@ -1,5 +1,86 @@
 // SPDX-License-Identifier: MIT
-int main()
+// The fddem program: parses the command line, runs one subcommand, maps failures to exit
+// statuses (the library throws; only app/ decides how a failure ends the process).
+
+#include "fddem/core/errors.hpp"
+
+#include <CLI/CLI.hpp>
+#include <mpi.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "commands.hpp"
+
+namespace {
+
+/// MPI for hypre: one process by default; `mpirun -n 1 fddem …` is the same run.
+class MpiSession {
+public:
+    MpiSession(int* argc, char*** argv) { MPI_Init(argc, argv); }
+    MpiSession(const MpiSession&) = delete;
+    MpiSession& operator=(const MpiSession&) = delete;
+    MpiSession(MpiSession&&) = delete;
+    MpiSession& operator=(MpiSession&&) = delete;
+    ~MpiSession() { MPI_Finalize(); }
+};
+
+} // namespace
+
+int main(int argc, char** argv)
 {
-    return 0;
+    using namespace fddem::app;
+    MpiSession mpi(&argc, &argv);
+
+    CLI::App app{"fddem: rigid particles in viscous incompressible fluid (FD-DEM, Wu & Yuan 2015)"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", FDDEM_VERSION);
+
+    RunOptions run;
+    CLI::App* run_cmd = app.add_subcommand("run", "Run a case file");
+    run_cmd->add_option("case", run.case_file, "Case file (TOML)")->required();
+    run_cmd->add_option(
+        "-o,--output", run.output_directory,
+        "Run directory (default: the case's output.directory, or runs/<case name>)");
+    run_cmd->add_option("--set", run.overrides,
+                        "Override a case key, section.key=value (repeatable)");
+    run_cmd->add_flag("--force", run.force, "Overwrite an existing run directory");
+    run_cmd->add_flag("-q,--quiet", run.quiet, "No progress output");
+
+    bool keys = false;
+    bool markdown = false;
+    CLI::App* info_cmd =
+        app.add_subcommand("info", "Version, build and libraries; --keys: case keys");
+    info_cmd->add_flag("--keys", keys, "Print every case key with type, unit, default, range, doc");
+    info_cmd->add_flag("--markdown", markdown, "With --keys: Markdown (docs/case-file.md)");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int status = app.exit(e);
+        return status == 0 ? exit_success : exit_bad_input;
+    }
+
+    int n_processes = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &n_processes);
+    if (n_processes > 1) {
+        std::fprintf(stderr,
+                     "fddem: runs on more than one MPI process are not supported yet "
+                     "(got %d); run with one process\n",
+                     n_processes);
+        return exit_bad_input;
+    }
+
+    try {
+        if (*run_cmd) {
+            return run_command(run);
+        }
+        return info_command(keys, markdown);
+    } catch (const fddem::InputError& e) {
+        std::fprintf(stderr, "fddem: %s\n", e.formatted().c_str());
+        return exit_bad_input;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "fddem: internal error: %s\n", e.what());
+        return exit_internal_error;
+    }
 }

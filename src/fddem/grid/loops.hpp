@@ -52,6 +52,27 @@ void for_each_row(const Box<Dim>& box, F&& f)
     for_each_index(rows, std::forward<F>(f), static_cast<std::size_t>(box.extent(0)));
 }
 
+/// Calls f(index) for every index of `box` serially, x fastest (file output order).
+template <int Dim, class F>
+void for_each_cell_in_vtk_order(const Box<Dim>& box, F&& f)
+{
+    if constexpr (Dim == 2) {
+        for (int j = box.lo[1]; j < box.hi[1]; ++j) {
+            for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+                f(Index<2>{i, j});
+            }
+        }
+    } else {
+        for (int k = box.lo[2]; k < box.hi[2]; ++k) {
+            for (int j = box.lo[1]; j < box.hi[1]; ++j) {
+                for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+                    f(Index<3>{i, j, k});
+                }
+            }
+        }
+    }
+}
+
 /// Max over `box` of g(index) (g ≥ 0); the one reduction that becomes an MPI_Allreduce.
 template <int Dim, class G>
 [[nodiscard]] double max_over(const Box<Dim>& box, G&& g)

@@ -20,6 +20,7 @@ struct LineSample {
 
 struct CaseConfig {
     std::string source_file; ///< the case file path, for messages
+    std::string as_run;      ///< the whole case as TOML, defaults and overrides filled in
     std::string title;       ///< [case] title
 
     // [domain]
@@ -45,13 +46,14 @@ struct CaseConfig {
     long max_steps = 100000000;
 
     // [simple]
-    double tolerance = 1e-6; ///< normalised mass and momentum residuals
+    double tolerance = 1e-5; ///< normalised mass and momentum residuals
     int max_outer_iterations = 50;
     double velocity_relaxation = 1.0;
     double pressure_relaxation = 1.0;
-    int momentum_sweeps = 2;
+    int momentum_sweeps = 4;
     std::string convection = "central";   ///< "central" (deferred correction) or "upwind"
     std::string pressure_solver = "auto"; ///< "auto", "fft" or "hypre"
+    std::string fft_planning = "measure"; ///< "measure" or "estimate"
     double linear_tolerance = 1e-10;      ///< hypre relative residual tolerance
     int linear_max_iterations = 200;
 

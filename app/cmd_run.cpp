@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: MIT
+// `fddem run`: read and check the case, build the simulation, prepare the run directory (in that
+// order, so bad input writes nothing), then step to the end writing the outputs.
+
+#include "fddem/core/errors.hpp"
+#include "fddem/grid/sampling.hpp"
+#include "fddem/io/atomic_file.hpp"
+#include "fddem/io/build_info.hpp"
+#include "fddem/io/case_reader.hpp"
+#include "fddem/io/csv_history.hpp"
+#include "fddem/io/run_directory.hpp"
+#include "fddem/io/summary.hpp"
+#include "fddem/io/vtk_writer.hpp"
+#include "fddem/simulation/simulation.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+
+#include "commands.hpp"
+#include "progress.hpp"
+
+namespace fddem::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Seconds = std::chrono::duration<double>;
+
+/// Courant number above which a step is reported (implicit Euler is stable beyond it, but the
+/// SIMPLE iterations and the time accuracy degrade).
+constexpr double courant_warning = 2.0;
+/// Not-converged steps reported one by one before only the count goes on.
+constexpr long max_reported_unconverged = 10;
+
+fs::path default_run_directory(const RunOptions& options, const CaseConfig& config)
+{
+    if (!options.output_directory.empty()) {
+        return options.output_directory;
+    }
+    if (!config.output_directory.empty()) {
+        return config.output_directory;
+    }
+    const fs::path file(options.case_file);
+    // cases/<…>/<name>/case.toml runs into runs/<name>.
+    const std::string stem = file.stem() == "case" && file.has_parent_path()
+                                 ? fs::absolute(file).parent_path().filename().string()
+                                 : file.stem().string();
+    return fs::path("runs") / stem;
+}
+
+template <int Dim>
+class Run {
+public:
+    Run(const CaseConfig& config, fs::path directory, const RunOptions& options)
+        : config_(config), sim_(config), directory_(std::move(directory)),
+          progress_(stderr, !options.quiet && ::isatty(STDERR_FILENO) != 0,
+                    options.quiet ? std::numeric_limits<long>::max() : config.log_interval,
+                    config.end_time),
+          pvd_(directory_ / "fields.pvd")
+    {
+    }
+
+    int execute(bool force)
+    {
+        prepare_run_directory(directory_, force);
+        write_file_atomically(directory_ / "case.toml", config_.as_run);
+        CsvHistory solver(directory_ / "solver.csv",
+                          {"step", "time", "dt", "outer_iterations", "total_outer_iterations",
+                           "is_converged", "mass_residual", "momentum_residual", "courant",
+                           "rate_of_change", "wall_seconds"});
+        const auto start = std::chrono::steady_clock::now();
+        write_fields();
+        double next_field_time = config_.field_interval;
+        StepReport report;
+        int status = exit_success;
+        std::string failure;
+        try {
+            do {
+                report = sim_.advance();
+                total_outer_ += report.outer_iterations;
+                const double wall = Seconds(std::chrono::steady_clock::now() - start).count();
+                const Clock& clock = sim_.clock();
+                solver.append({static_cast<double>(clock.step), clock.time, clock.dt,
+                               static_cast<double>(report.outer_iterations),
+                               static_cast<double>(total_outer_), report.is_converged ? 1.0 : 0.0,
+                               report.mass_residual, report.momentum_residual, report.courant,
+                               report.rate_of_change, wall});
+                watch(report);
+                progress_.update(clock.step, clock.time, report.outer_iterations);
+                if (config_.field_interval > 0.0 &&
+                    clock.time >= next_field_time - 0.5 * clock.dt) {
+                    write_fields();
+                    next_field_time += config_.field_interval;
+                }
+            } while (!sim_.is_finished(report));
+        } catch (const NumericalError& e) {
+            failure = fmt::format("step {}, t = {:g} s, in {}: {}", e.step(), e.time(), e.where(),
+                                  e.what());
+            status = exit_numerical_failure;
+        }
+        const double stepping = Seconds(std::chrono::steady_clock::now() - start).count();
+        progress_.finish();
+        if (status == exit_success) {
+            if (pvd_.entries().empty() || pvd_.entries().back().first < sim_.clock().time) {
+                write_fields();
+            }
+            write_samples();
+        }
+        write_summary(stepping, report,
+                      status == exit_success ? "completed" : "failed: " + failure);
+        if (status != exit_success) {
+            std::fprintf(stderr,
+                         "fddem: numerical failure at %s\n  outputs up to the last step "
+                         "are in %s\n",
+                         failure.c_str(), directory_.c_str());
+            return status;
+        }
+        std::fprintf(stderr,
+                     "fddem: %s: %ld steps to t = %.6g s, %ld outer iterations, %.2f s; results "
+                     "in %s\n",
+                     config_.source_file.c_str(), sim_.clock().step, sim_.clock().time,
+                     total_outer_, stepping, directory_.c_str());
+        return exit_success;
+    }
+
+private:
+    void watch(const StepReport& report)
+    {
+        if (!report.is_converged) {
+            ++n_unconverged_;
+            if (n_unconverged_ <= max_reported_unconverged) {
+                progress_.message(fmt::format(
+                    "warning: step {} (t = {:g} s): SIMPLE not converged in {} outer iterations "
+                    "(mass residual {:.2e}, momentum residual {:.2e}, tolerance {:g}){}",
+                    sim_.clock().step, sim_.clock().time, report.outer_iterations,
+                    report.mass_residual, report.momentum_residual, config_.tolerance,
+                    n_unconverged_ == max_reported_unconverged ? "; further ones only counted"
+                                                               : ""));
+            }
+        }
+        if (report.courant > courant_warning && !has_warned_courant_) {
+            has_warned_courant_ = true;
+            progress_.message(fmt::format("warning: step {}: Courant number {:.2f} > {:g}; "
+                                          "consider a smaller time.dt",
+                                          sim_.clock().step, report.courant, courant_warning));
+        }
+        max_courant_ = std::max(max_courant_, report.courant);
+    }
+
+    void write_fields()
+    {
+        const std::string name = fmt::format("fields/fields_{:06d}.vtr", pvd_.entries().size());
+        write_vtr(directory_ / name, sim_.grid(), sim_.fluid().u, sim_.fluid().p);
+        pvd_.add(sim_.clock().time, name);
+    }
+
+    void write_samples()
+    {
+        std::vector<std::string> columns;
+        const char* axes[] = {"x", "y", "z"};
+        const char* velocities[] = {"u", "v", "w"};
+        for (int d = 0; d < Dim; ++d) {
+            columns.emplace_back(axes[d]);
+        }
+        for (int d = 0; d < Dim; ++d) {
+            columns.emplace_back(velocities[d]);
+        }
+        columns.emplace_back("p");
+        for (const LineSample& line : config_.lines) {
+            Vec<Dim> from;
+            Vec<Dim> to;
+            for (int d = 0; d < Dim; ++d) {
+                from[d] = line.from[static_cast<std::size_t>(d)];
+                to[d] = line.to[static_cast<std::size_t>(d)];
+            }
+            write_csv(
+                directory_ / "samples" / (line.name + ".csv"), columns,
+                sample_line(sim_.grid(), sim_.fluid().u, sim_.fluid().p, from, to, line.n_points));
+        }
+    }
+
+    void write_summary(double stepping, const StepReport& last, const std::string& status)
+    {
+        RunSummary summary;
+        summary.set("status", status);
+        summary.set("steps", sim_.clock().step);
+        summary.set("time", sim_.clock().time);
+        summary.set("total_outer_iterations", total_outer_);
+        summary.set("unconverged_steps", n_unconverged_);
+        summary.set("max_courant", max_courant_);
+        summary.set("last_mass_residual", last.mass_residual);
+        summary.set("last_momentum_residual", last.momentum_residual);
+        summary.set("last_rate_of_change", last.rate_of_change);
+        summary.set("cells", static_cast<long>(sim_.grid().n_cells()));
+        summary.set("pressure_solver", sim_.pressure_solver().name());
+        summary.set("wall_seconds_stepping", stepping);
+        summary.set("peak_memory_mib", peak_memory_mib());
+        for (const auto& [name, value] : build_info()) {
+            summary.set("build_" + name, value);
+        }
+        summary.set_phase_seconds("momentum", sim_.momentum_seconds());
+        summary.set_phase_seconds("pressure", sim_.pressure_seconds());
+        summary.set_phase_seconds("other",
+                                  stepping - sim_.momentum_seconds() - sim_.pressure_seconds());
+        summary.write(directory_ / "summary.json");
+    }
+
+    CaseConfig config_;
+    Simulation<Dim> sim_;
+    fs::path directory_;
+    Progress progress_;
+    PvdCollection pvd_;
+    long total_outer_ = 0;
+    long n_unconverged_ = 0;
+    double max_courant_ = 0.0;
+    bool has_warned_courant_ = false;
+};
+
+} // namespace
+
+int run_command(const RunOptions& options)
+{
+    const CaseConfig config = read_case(options.case_file, options.overrides);
+    const fs::path directory = default_run_directory(options, config);
+    if (config.dimension == 2) {
+        Run<2> run(config, directory, options);
+        return run.execute(options.force);
+    }
+    Run<3> run(config, directory, options);
+    return run.execute(options.force);
+}
+
+} // namespace fddem::app

@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The subcommands of the fddem program. Each returns the process exit status.
+
+#include <string>
+#include <vector>
+
+namespace fddem::app {
+
+/// Exit statuses: 0 success, 1 internal error, 2 bad input, 3 numerical failure.
+inline constexpr int exit_success = 0;
+inline constexpr int exit_internal_error = 1;
+inline constexpr int exit_bad_input = 2;
+inline constexpr int exit_numerical_failure = 3;
+
+struct RunOptions {
+    std::string case_file;
+    std::string output_directory; ///< empty: from the case, or runs/<case stem>
+    std::vector<std::string> overrides;
+    bool force = false;
+    bool quiet = false;
+};
+
+int run_command(const RunOptions& options);
+int info_command(bool keys, bool markdown);
+
+} // namespace fddem::app

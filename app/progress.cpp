@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+#include "progress.hpp"
+
+#include <cmath>
+
+namespace fddem::app {
+
+Progress::Progress(std::FILE* stream, bool is_terminal, long log_interval,
+                   std::optional<double> end_time)
+    : stream_(stream), is_terminal_(is_terminal), log_interval_(log_interval), end_time_(end_time),
+      start_(std::chrono::steady_clock::now()), last_draw_(start_)
+{
+}
+
+std::string Progress::clock_text(double seconds)
+{
+    if (!(seconds >= 0.0) || !std::isfinite(seconds)) {
+        return "-";
+    }
+    const long s = std::lround(seconds);
+    char text[32];
+    std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+    return text;
+}
+
+void Progress::update(long step, double time, int outer_iterations)
+{
+    const auto now = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double rate = elapsed > 0.0 ? static_cast<double>(step) / elapsed : 0.0;
+    std::string eta = "-";
+    std::string percent;
+    if (end_time_ && time > 0.0) {
+        eta = clock_text(elapsed * (*end_time_ - time) / time);
+        char p[16];
+        std::snprintf(p, sizeof p, " (%5.1f %%)", 100.0 * time / *end_time_);
+        percent = p;
+    }
+    if (is_terminal_) {
+        // Redraw at most four times a second.
+        if (std::chrono::duration<double>(now - last_draw_).count() < 0.25) {
+            return;
+        }
+        last_draw_ = now;
+        std::fprintf(stream_, "\rstep %ld  t = %.6g s%s  %d outer  %.1f steps/s  ETA %s   ", step,
+                     time, percent.c_str(), outer_iterations, rate, eta.c_str());
+        std::fflush(stream_);
+        has_line_ = true;
+        return;
+    }
+    if (step % log_interval_ == 0) {
+        std::fprintf(stream_, "step %ld  t = %.6g s%s  %d outer  %.1f steps/s  ETA %s\n", step,
+                     time, percent.c_str(), outer_iterations, rate, eta.c_str());
+        std::fflush(stream_);
+    }
+}
+
+void Progress::finish()
+{
+    if (has_line_) {
+        std::fputc('\n', stream_);
+        has_line_ = false;
+    }
+}
+
+void Progress::message(const std::string& text)
+{
+    finish();
+    std::fprintf(stream_, "%s\n", text.c_str());
+    std::fflush(stream_);
+}
+
+} // namespace fddem::app

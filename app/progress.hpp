@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Progress of a run: a redrawn status line on a terminal, plain periodic lines otherwise.
+
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace fddem::app {
+
+class Progress {
+public:
+    Progress(std::FILE* stream, bool is_terminal, long log_interval,
+             std::optional<double> end_time);
+    /// Called after every step.
+    void update(long step, double time, int outer_iterations);
+    /// Ends the status line (terminal) before other messages are printed.
+    void finish();
+    /// A message on its own line, keeping the status line intact.
+    void message(const std::string& text);
+
+    /// "h:mm:ss" for a number of seconds (negative or unknown: "-").
+    [[nodiscard]] static std::string clock_text(double seconds);
+
+private:
+    std::FILE* stream_;
+    bool is_terminal_;
+    long log_interval_;
+    std::optional<double> end_time_;
+    std::chrono::steady_clock::time_point start_;
+    std::chrono::steady_clock::time_point last_draw_;
+    bool has_line_ = false;
+};
+
+} // namespace fddem::app

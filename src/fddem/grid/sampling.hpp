@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Values of the staggered fields at arbitrary points, and cell-centred derived fields:
+/// (multi-)linear interpolation from each quantity's own positions (faces of its axis for a
+/// velocity component, cell centres for p), using ghost values near walls (fill them first).
+
+#include "fddem/grid/fields.hpp"
+
+#include <vector>
+
+namespace fddem {
+
+/// Velocity at point x [m] (inside the box, boundary included).
+template <int Dim>
+[[nodiscard]] Vec<Dim> sample_velocity(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
+                                       const Vec<Dim>& x);
+
+/// A cell-centred field at point x [m].
+template <int Dim>
+[[nodiscard]] double sample_cell_field(const MacGrid<Dim>& grid, const CellField<Dim>& phi,
+                                       const Vec<Dim>& x);
+
+/// Rows (x, y[, z], u, v[, w], p) at n_points equally spaced points from `from` to `to`.
+template <int Dim>
+[[nodiscard]] std::vector<std::vector<double>>
+sample_line(const MacGrid<Dim>& grid, const FaceField<Dim>& u, const CellField<Dim>& p,
+            const Vec<Dim>& from, const Vec<Dim>& to, int n_points);
+
+/// Velocity component `axis` at cell centres: the mean of the cell's two faces.
+template <int Dim>
+void cell_centred_velocity(const MacGrid<Dim>& grid, const FaceField<Dim>& u, int axis,
+                           CellField<Dim>& out);
+
+/// Vorticity component ω_c = ∂u_b/∂x_a − ∂u_a/∂x_b at cell centres, (a, b, c) cyclic
+/// (in 2D only c = z: a = 0, b = 1): the mean of the four cell edges it is defined on.
+template <int Dim>
+void cell_centred_vorticity(const MacGrid<Dim>& grid, const FaceField<Dim>& u, int a, int b,
+                            CellField<Dim>& out);
+
+} // namespace fddem

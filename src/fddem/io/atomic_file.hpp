@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Whole-file writes that never leave a half-written file: write to a temporary name in the
+/// same directory, flush, then rename over the target (DESIGN.md §4, STYLE.md §9).
+
+#include <filesystem>
+#include <stdexcept>
+#include <string_view>
+
+namespace fddem {
+
+/// An output file could not be written during a run (disk full, directory removed, …).
+class OutputError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Writes `content` to `path` atomically. Throws OutputError on failure; `path` is untouched.
+void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+} // namespace fddem

@@ -1,0 +1,595 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/io/case_reader.hpp"
+
+#include "fddem/core/errors.hpp"
+#include "fddem/io/case_schema.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace fddem {
+
+std::size_t edit_distance(std::string_view a, std::string_view b)
+{
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) {
+        row[j] = j;
+    }
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] =
+                std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+namespace {
+
+const std::string override_source = "--set";
+
+/// Where things came from, for messages: the file, or "--set" for overridden keys.
+class Locator {
+public:
+    explicit Locator(std::string file) : file_(std::move(file)) {}
+    void mark_overridden(const std::string& full_key) { overridden_.insert(full_key); }
+
+    [[noreturn]] void fail(const std::string& key, const toml::node* node,
+                           const std::string& message) const
+    {
+        if (overridden_.count(key) != 0) {
+            throw InputError(override_source, 0, key, message);
+        }
+        const int line = node != nullptr ? static_cast<int>(node->source().begin.line) : 0;
+        throw InputError(file_, line, key, message);
+    }
+    [[nodiscard]] const std::string& file() const noexcept { return file_; }
+
+private:
+    std::string file_;
+    std::set<std::string> overridden_;
+};
+
+std::string suggestion(const std::string& wrong, const std::vector<std::string>& valid)
+{
+    std::string best;
+    std::size_t best_distance = std::string::npos;
+    for (const auto& v : valid) {
+        const std::size_t d = edit_distance(wrong, v);
+        if (d < best_distance) {
+            best_distance = d;
+            best = v;
+        }
+    }
+    // Suggest only near misses: at most a third of the name changed.
+    if (best_distance <= std::max<std::size_t>(2, wrong.size() / 3)) {
+        return "; did you mean '" + best + "'?";
+    }
+    return "";
+}
+
+bool is_table_array(const std::string& section)
+{
+    const auto arrays = case_table_arrays();
+    return std::any_of(arrays.begin(), arrays.end(),
+                       [&](const TableArraySpec& t) { return t.name == section; });
+}
+
+/// toml++ nests "output.lines" as table "output" with array "lines".
+const toml::array* find_table_array(const toml::table& doc, const std::string& path)
+{
+    const auto dot = path.find('.');
+    const toml::table* parent = doc.get_as<toml::table>(path.substr(0, dot));
+    return parent == nullptr ? nullptr : parent->get_as<toml::array>(path.substr(dot + 1));
+}
+
+void apply_override(toml::table& doc, const std::string& text, Locator& where)
+{
+    const auto equals = text.find('=');
+    const std::string path = equals == std::string::npos ? text : text.substr(0, equals);
+    const auto dot = path.find('.');
+    if (equals == std::string::npos || dot == std::string::npos || dot == 0 ||
+        dot + 1 >= path.size() || path.find('.', dot + 1) != std::string::npos) {
+        throw InputError(override_source, 0, path,
+                         "expected section.key=value (e.g. time.dt=1e-3), got '" + text + "'");
+    }
+    const std::string section = path.substr(0, dot);
+    const std::string name = path.substr(dot + 1);
+    const std::string value = text.substr(equals + 1);
+    toml::table parsed;
+    try {
+        parsed = toml::parse("v = " + value);
+    } catch (const toml::parse_error&) {
+        try {
+            parsed = toml::parse("v = \"" + value + "\""); // a bare word is a string
+        } catch (const toml::parse_error& e) {
+            throw InputError(override_source, 0, path,
+                             "cannot read the value '" + value +
+                                 "': " + std::string(e.description()));
+        }
+    }
+    toml::table* target = doc.get_as<toml::table>(section);
+    if (target == nullptr) {
+        if (doc.contains(section)) {
+            throw InputError(override_source, 0, path, "'" + section + "' is not a section");
+        }
+        doc.insert(section, toml::table{});
+        target = doc.get_as<toml::table>(section);
+    }
+    target->insert_or_assign(name, *parsed.get("v"));
+    where.mark_overridden(path);
+}
+
+/// Checks one value against its spec; `dimension` is the vector length expected.
+void check_value(const KeySpec& spec, const toml::node& node, int dimension, const Locator& where,
+                 const std::string& key)
+{
+    const auto is_number = [](const toml::node& n) {
+        return n.is_floating_point() || n.is_integer();
+    };
+    const auto check_range = [&](double x) {
+        if (!std::isfinite(x)) {
+            where.fail(key, &node, "must be a finite number");
+        }
+        const bool below = spec.is_min_open ? x <= spec.min : x < spec.min;
+        const bool above = spec.is_max_open ? x >= spec.max : x > spec.max;
+        if (below || above) {
+            where.fail(key, &node,
+                       fmt::format("{:g}{} is out of range: must be {}", x,
+                                   spec.unit.empty() ? "" : " " + spec.unit, range_text(spec)));
+        }
+    };
+    const auto wrong_type = [&]() {
+        where.fail(
+            key, &node,
+            fmt::format(
+                "expected {}, got {}", type_name(spec.type),
+                node.is_array()
+                    ? "an array"
+                    : std::string(
+                          toml::impl::node_type_friendly_names[static_cast<int>(node.type())])));
+    };
+    switch (spec.type) {
+    case KeyType::real:
+        if (!is_number(node)) {
+            wrong_type();
+        }
+        check_range(node.value<double>().value_or(0.0));
+        return;
+    case KeyType::integer:
+        if (!node.is_integer()) {
+            wrong_type();
+        }
+        check_range(static_cast<double>(node.value<std::int64_t>().value_or(0)));
+        return;
+    case KeyType::string:
+        if (!node.is_string()) {
+            wrong_type();
+        }
+        if (!spec.choices.empty()) {
+            const std::string v = *node.value<std::string>();
+            if (std::find(spec.choices.begin(), spec.choices.end(), v) == spec.choices.end()) {
+                where.fail(key, &node,
+                           "'" + v + "' is not valid: must be " + range_text(spec) +
+                               suggestion(v, spec.choices));
+            }
+        }
+        return;
+    case KeyType::boolean:
+        if (!node.is_boolean()) {
+            wrong_type();
+        }
+        return;
+    case KeyType::boolean_vector:
+        if (node.is_boolean()) {
+            return;
+        }
+        [[fallthrough]];
+    case KeyType::real_vector:
+    case KeyType::integer_vector: {
+        const toml::array* array = node.as_array();
+        if (array == nullptr) {
+            wrong_type();
+        }
+        if (static_cast<int>(array->size()) != dimension) {
+            where.fail(key, &node,
+                       fmt::format("has {} entries; this {}D case needs {}", array->size(),
+                                   dimension, dimension));
+        }
+        for (const toml::node& element : *array) {
+            const bool ok = spec.type == KeyType::real_vector      ? is_number(element)
+                            : spec.type == KeyType::integer_vector ? element.is_integer()
+                                                                   : element.is_boolean();
+            if (!ok) {
+                wrong_type();
+            }
+            if (spec.type != KeyType::boolean_vector) {
+                check_range(element.value<double>().value_or(0.0));
+            }
+        }
+        return;
+    }
+    }
+}
+
+/// The default of `spec` as a TOML node for a `dimension`-D case.
+toml::table default_node(const KeySpec& spec, int dimension)
+{
+    const std::string& text = *spec.value;
+    std::string value = text;
+    if (text == "zeros" || (spec.type == KeyType::boolean_vector && text == "false")) {
+        value = "[";
+        for (int d = 0; d < dimension; ++d) {
+            value += d == 0 ? "" : ", ";
+            value += text == "zeros" ? "0.0" : "false";
+        }
+        value += "]";
+    }
+    return toml::parse("v = " + value);
+}
+
+std::vector<double> as_reals(const toml::node& node)
+{
+    std::vector<double> out;
+    for (const toml::node& e : *node.as_array()) {
+        out.push_back(e.value<double>().value_or(0.0));
+    }
+    return out;
+}
+
+std::vector<int> as_integers(const toml::node& node)
+{
+    std::vector<int> out;
+    for (const toml::node& e : *node.as_array()) {
+        out.push_back(static_cast<int>(e.value<std::int64_t>().value_or(0)));
+    }
+    return out;
+}
+
+std::vector<bool> as_booleans(const toml::node& node, int dimension)
+{
+    if (node.is_boolean()) {
+        return std::vector<bool>(static_cast<std::size_t>(dimension), *node.value<bool>());
+    }
+    std::vector<bool> out;
+    for (const toml::node& e : *node.as_array()) {
+        out.push_back(e.value<bool>().value_or(false));
+    }
+    return out;
+}
+
+class CaseBuilder {
+public:
+    CaseBuilder(toml::table doc, Locator where) : doc_(std::move(doc)), where_(std::move(where)) {}
+
+    CaseConfig build()
+    {
+        check_sections();
+        dimension_ = read_dimension();
+        fill_defaults_and_check();
+        CaseConfig c = convert();
+        check_contradictions(c);
+        std::ostringstream as_run;
+        as_run << "# The case as run by fddem: defaults filled in and --set overrides applied.\n"
+               << "# Source: " << where_.file() << "\n\n"
+               << doc_ << "\n";
+        c.as_run = as_run.str();
+        return c;
+    }
+
+private:
+    const toml::node* node(const std::string& section, const std::string& name) const
+    {
+        const toml::table* t = doc_.get_as<toml::table>(section);
+        return t == nullptr ? nullptr : t->get(name);
+    }
+
+    void check_sections()
+    {
+        std::vector<std::string> sections;
+        std::vector<std::string> full_names;
+        for (const KeySpec& spec : schema_) {
+            if (std::find(sections.begin(), sections.end(), spec.section) == sections.end()) {
+                sections.push_back(spec.section);
+            }
+            full_names.push_back(spec.full_name());
+        }
+        for (const auto& [key, value] : doc_) {
+            const std::string section(key.str());
+            const bool is_known =
+                std::any_of(sections.begin(), sections.end(), [&](const std::string& s) {
+                    return s == section || s.rfind(section + ".", 0) == 0;
+                });
+            if (!is_known) {
+                where_.fail(section, &value,
+                            "unknown section '" + section + "'" + suggestion(section, sections));
+            }
+            const toml::table* table = value.as_table();
+            if (table == nullptr) {
+                where_.fail(section, &value,
+                            "'" + section + "' must be a section ([" + section + "])");
+            }
+            for (const auto& [name_key, entry] : *table) {
+                const std::string full = section + "." + std::string(name_key.str());
+                if (is_table_array(full)) {
+                    check_table_array(full, entry, full_names);
+                    continue;
+                }
+                if (std::find(full_names.begin(), full_names.end(), full) == full_names.end()) {
+                    where_.fail(full, &entry,
+                                "unknown key '" + full + "'" + suggestion(full, full_names));
+                }
+            }
+        }
+    }
+
+    void check_table_array(const std::string& path, const toml::node& entry,
+                           const std::vector<std::string>& full_names)
+    {
+        const toml::array* array = entry.as_array();
+        if (array == nullptr || !array->is_array_of_tables()) {
+            where_.fail(path, &entry, "must be an array of tables ([[" + path + "]])");
+        }
+        for (const toml::node& element : *array) {
+            for (const auto& [k, v] : *element.as_table()) {
+                const std::string full = path + "." + std::string(k.str());
+                if (std::find(full_names.begin(), full_names.end(), full) == full_names.end()) {
+                    where_.fail(full, &v,
+                                "unknown key '" + full + "'" + suggestion(full, full_names));
+                }
+            }
+        }
+    }
+
+    int read_dimension()
+    {
+        const toml::node* size = node("domain", "size");
+        if (size == nullptr) {
+            where_.fail("domain.size", doc_.get("domain"), "missing required key 'domain.size'");
+        }
+        const toml::array* array = size->as_array();
+        if (array == nullptr || (array->size() != 2 && array->size() != 3)) {
+            where_.fail("domain.size", size, "must be an array of 2 (2D) or 3 (3D) side lengths");
+        }
+        return static_cast<int>(array->size());
+    }
+
+    void fill_defaults_and_check()
+    {
+        for (const KeySpec& spec : schema_) {
+            if (is_table_array(spec.section)) {
+                continue;
+            }
+            if (spec.section == "walls" && spec.name[0] == 'z' && dimension_ == 2) {
+                if (const toml::node* n = node("walls", spec.name)) {
+                    where_.fail(spec.full_name(), n, "a 2D case has no z walls");
+                }
+                continue;
+            }
+            const toml::node* n = node(spec.section, spec.name);
+            if (n == nullptr) {
+                if (!spec.value) {
+                    where_.fail(spec.full_name(), doc_.get(spec.section),
+                                "missing required key '" + spec.full_name() + "'");
+                }
+                if (*spec.value == "none") {
+                    continue;
+                }
+                if (!doc_.contains(spec.section)) {
+                    doc_.insert(spec.section, toml::table{});
+                }
+                doc_.get_as<toml::table>(spec.section)
+                    ->insert(spec.name, *default_node(spec, dimension_).get("v"));
+                continue;
+            }
+            check_value(spec, *n, dimension_, where_, spec.full_name());
+        }
+        for (const auto& t : case_table_arrays()) {
+            const toml::array* array = find_table_array(doc_, t.name);
+            if (array == nullptr) {
+                continue;
+            }
+            for (const toml::node& element : *array) {
+                toml::table& entry = *const_cast<toml::table*>(element.as_table());
+                for (const KeySpec& spec : schema_) {
+                    if (spec.section != t.name) {
+                        continue;
+                    }
+                    const toml::node* n = entry.get(spec.name);
+                    if (n == nullptr) {
+                        if (!spec.value) {
+                            where_.fail(spec.full_name(), &element,
+                                        "missing required key '" + spec.name + "' in [[" + t.name +
+                                            "]]");
+                        }
+                        entry.insert(spec.name, *default_node(spec, dimension_).get("v"));
+                        continue;
+                    }
+                    check_value(spec, *n, dimension_, where_, spec.full_name());
+                }
+            }
+        }
+    }
+
+    CaseConfig convert() const
+    {
+        const auto real = [&](const char* s, const char* k) {
+            return node(s, k)->value<double>().value_or(0.0);
+        };
+        const auto integer = [&](const char* s, const char* k) {
+            return node(s, k)->value<std::int64_t>().value_or(0);
+        };
+        const auto text = [&](const char* s, const char* k) {
+            return node(s, k)->value<std::string>().value_or("");
+        };
+        CaseConfig c;
+        c.source_file = where_.file();
+        c.title = text("case", "title");
+        c.dimension = dimension_;
+        c.origin = as_reals(*node("domain", "origin"));
+        c.size = as_reals(*node("domain", "size"));
+        c.cells = as_integers(*node("domain", "cells"));
+        c.periodic = as_booleans(*node("domain", "periodic"), dimension_);
+        const char* walls[3][2] = {{"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}};
+        for (int d = 0; d < dimension_; ++d) {
+            c.wall_velocity.push_back(
+                {as_reals(*node("walls", walls[d][0])), as_reals(*node("walls", walls[d][1]))});
+        }
+        c.density = real("fluid", "density");
+        c.viscosity = real("fluid", "viscosity");
+        c.gravity = as_reals(*node("fluid", "gravity"));
+        c.body_force = as_reals(*node("fluid", "body_force"));
+        c.dt = real("time", "dt");
+        if (node("time", "end") != nullptr) {
+            c.end_time = real("time", "end");
+        }
+        if (node("time", "steady_tolerance") != nullptr) {
+            c.steady_tolerance = real("time", "steady_tolerance");
+        }
+        c.max_steps = integer("time", "max_steps");
+        c.tolerance = real("simple", "tolerance");
+        c.max_outer_iterations = static_cast<int>(integer("simple", "max_outer_iterations"));
+        c.velocity_relaxation = real("simple", "velocity_relaxation");
+        c.pressure_relaxation = real("simple", "pressure_relaxation");
+        c.momentum_sweeps = static_cast<int>(integer("simple", "momentum_sweeps"));
+        c.convection = text("simple", "convection");
+        c.pressure_solver = text("simple", "pressure_solver");
+        c.fft_planning = text("simple", "fft_planning");
+        c.linear_tolerance = real("simple", "linear_tolerance");
+        c.linear_max_iterations = static_cast<int>(integer("simple", "linear_max_iterations"));
+        c.output_directory = text("output", "directory");
+        c.field_interval = real("output", "field_interval");
+        c.log_interval = integer("output", "log_interval");
+        if (const toml::array* lines = find_table_array(doc_, "output.lines")) {
+            for (const toml::node& element : *lines) {
+                const toml::table& t = *element.as_table();
+                LineSample line;
+                line.name = t.get("name")->value<std::string>().value_or("");
+                line.from = as_reals(*t.get("from"));
+                line.to = as_reals(*t.get("to"));
+                line.n_points =
+                    static_cast<int>(t.get("points")->value<std::int64_t>().value_or(2));
+                c.lines.push_back(line);
+            }
+        }
+        return c;
+    }
+
+    void check_contradictions(const CaseConfig& c) const
+    {
+        if (!c.end_time && !c.steady_tolerance) {
+            where_.fail(
+                "time.end", doc_.get("time"),
+                "give time.end, time.steady_tolerance, or both: the run needs a way to stop");
+        }
+        if (c.end_time && c.dt > *c.end_time) {
+            where_.fail("time.dt", node("time", "dt"),
+                        fmt::format("the time step {:g} s is longer than the end time {:g} s", c.dt,
+                                    *c.end_time));
+        }
+        const char* walls[3][2] = {{"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}};
+        for (int d = 0; d < dimension_; ++d) {
+            for (int side = 0; side < 2; ++side) {
+                const std::string key = std::string("walls.") + walls[d][side];
+                const toml::node* n = node("walls", walls[d][side]);
+                const bool is_given = n != nullptr && n->source().begin.line > 0;
+                if (c.periodic[static_cast<std::size_t>(d)] && is_given) {
+                    where_.fail(key, n,
+                                "axis " + std::to_string(d) +
+                                    " is periodic (domain.periodic): it has no walls");
+                }
+                const double normal =
+                    c.wall_velocity[static_cast<std::size_t>(d)][static_cast<std::size_t>(side)]
+                                   [static_cast<std::size_t>(d)];
+                if (normal != 0.0) {
+                    where_.fail(key, n,
+                                fmt::format("the wall-normal component is {:g}; a wall may only "
+                                            "slide along itself (normal component 0)",
+                                            normal));
+                }
+            }
+        }
+        std::set<std::string> names;
+        const toml::array* lines = find_table_array(doc_, "output.lines");
+        for (std::size_t k = 0; k < c.lines.size(); ++k) {
+            const LineSample& line = c.lines[k];
+            const toml::table& t = *(*lines)[k].as_table();
+            const bool is_valid_name =
+                !line.name.empty() && std::all_of(line.name.begin(), line.name.end(), [](char ch) {
+                    return std::isalnum(static_cast<unsigned char>(ch)) != 0 || ch == '_' ||
+                           ch == '-';
+                });
+            if (!is_valid_name) {
+                where_.fail("output.lines.name", t.get("name"),
+                            "'" + line.name +
+                                "' is not a valid sample name (letters, digits, _, -)");
+            }
+            if (!names.insert(line.name).second) {
+                where_.fail("output.lines.name", t.get("name"),
+                            "the sample name '" + line.name + "' is used twice");
+            }
+            for (const auto* end : {"from", "to"}) {
+                const std::vector<double>& p = std::string(end) == "from" ? line.from : line.to;
+                for (int d = 0; d < dimension_; ++d) {
+                    const auto k2 = static_cast<std::size_t>(d);
+                    const double lo = c.origin[k2];
+                    const double hi = c.origin[k2] + c.size[k2];
+                    if (p[k2] < lo || p[k2] > hi) {
+                        where_.fail(std::string("output.lines.") + end, t.get(end),
+                                    fmt::format("point is outside the box on axis {}: {:g} not in "
+                                                "[{:g}, {:g}]",
+                                                d, p[k2], lo, hi));
+                    }
+                }
+            }
+        }
+    }
+
+    std::vector<KeySpec> schema_ = case_schema();
+    toml::table doc_;
+    Locator where_;
+    int dimension_ = 2;
+};
+
+} // namespace
+
+CaseConfig read_case_string(std::string_view text, const std::string& source_name,
+                            const std::vector<std::string>& overrides)
+{
+    toml::table doc;
+    try {
+        doc = toml::parse(text, source_name);
+    } catch (const toml::parse_error& e) {
+        throw InputError(source_name, static_cast<int>(e.source().begin.line), "",
+                         "TOML syntax error: " + std::string(e.description()));
+    }
+    Locator where(source_name);
+    for (const std::string& o : overrides) {
+        apply_override(doc, o, where);
+    }
+    return CaseBuilder(std::move(doc), std::move(where)).build();
+}
+
+CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw InputError(path, 0, "", "cannot open the case file");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return read_case_string(text.str(), path, overrides);
+}
+
+} // namespace fddem

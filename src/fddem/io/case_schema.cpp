@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/io/case_schema.hpp"
+
+#include <fmt/format.h>
+
+namespace fddem {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+KeySpec key(std::string section, std::string name, KeyType type, std::string unit,
+            std::optional<std::string> value, std::string doc)
+{
+    KeySpec spec;
+    spec.section = std::move(section);
+    spec.name = std::move(name);
+    spec.type = type;
+    spec.unit = std::move(unit);
+    spec.value = std::move(value);
+    spec.doc = std::move(doc);
+    return spec;
+}
+
+KeySpec ranged(KeySpec spec, double min, double max, bool is_min_open, bool is_max_open)
+{
+    spec.min = min;
+    spec.max = max;
+    spec.is_min_open = is_min_open;
+    spec.is_max_open = is_max_open;
+    return spec;
+}
+
+KeySpec positive(KeySpec spec)
+{
+    return ranged(std::move(spec), 0.0, inf, true, false);
+}
+
+KeySpec choice(KeySpec spec, std::vector<std::string> choices)
+{
+    spec.choices = std::move(choices);
+    return spec;
+}
+
+} // namespace
+
+std::vector<KeySpec> case_schema()
+{
+    using T = KeyType;
+    const std::string none;
+    std::vector<KeySpec> s;
+    s.push_back(
+        key("case", "title", T::string, none, "\"\"", "A one-line description of the case."));
+
+    s.push_back(key("domain", "origin", T::real_vector, "m", "zeros", "Lower corner of the box."));
+    s.push_back(positive(key("domain", "size", T::real_vector, "m", std::nullopt,
+                             "Side lengths of the box; 2 entries make a 2D case, 3 a 3D one.")));
+    s.push_back(ranged(key("domain", "cells", T::integer_vector, none, std::nullopt,
+                           "Cells along each axis (the grid is uniform; equal spacing per axis "
+                           "is recommended)."),
+                       4, 1000000, false, false));
+    s.push_back(key("domain", "periodic", T::boolean_vector, none, "false",
+                    "Whether each axis is periodic (else walled on both sides)."));
+
+    for (const char* wall : {"x_low", "x_high", "y_low", "y_high", "z_low", "z_high"}) {
+        s.push_back(key("walls", wall, T::real_vector, "m/s", "zeros",
+                        fmt::format("Velocity of the {} wall; only tangential components may be "
+                                    "non-zero (a sliding wall, e.g. a lid).",
+                                    wall)));
+    }
+
+    s.push_back(
+        positive(key("fluid", "density", T::real, "kg/m³", std::nullopt, "Fluid density ρf.")));
+    s.push_back(
+        positive(key("fluid", "viscosity", T::real, "Pa·s", std::nullopt, "Dynamic viscosity μ.")));
+    s.push_back(key("fluid", "gravity", T::real_vector, "m/s²", "zeros",
+                    "Gravitational acceleration; it acts on particles only (buoyancy-reduced "
+                    "weight), the fluid's hydrostatic pressure is not computed."));
+    s.push_back(key("fluid", "body_force", T::real_vector, "N/m³", "zeros",
+                    "A uniform force per unit volume on the fluid, e.g. to drive a periodic "
+                    "channel."));
+
+    s.push_back(positive(key("time", "dt", T::real, "s", std::nullopt, "Time step Δt.")));
+    s.push_back(positive(key("time", "end", T::real, "s", "none",
+                             "End time; at least one of time.end and time.steady_tolerance "
+                             "is required.")));
+    s.push_back(positive(key("time", "steady_tolerance", T::real, none, "none",
+                             "Stop when the flow is steady: max|u^{n+1} − u^n|/Δt · L/U² "
+                             "below this (L the smallest box side, U the largest speed).")));
+    s.push_back(ranged(
+        key("time", "max_steps", T::integer, none, "100000000", "Stop after this many steps."), 1,
+        inf, false, false));
+
+    s.push_back(ranged(key("simple", "tolerance", T::real, none, "1e-5",
+                           "SIMPLE convergence: normalised mass and momentum residuals below "
+                           "this end a step's outer iterations."),
+                       0.0, 1.0, true, true));
+    s.push_back(ranged(key("simple", "max_outer_iterations", T::integer, none, "50",
+                           "Outer iterations per step at most (a step that reaches it is "
+                           "reported as not converged)."),
+                       1, 10000, false, false));
+    s.push_back(ranged(key("simple", "velocity_relaxation", T::real, none, "1.0",
+                           "Under-relaxation α_u of the momentum equations."),
+                       0.0, 1.0, true, false));
+    s.push_back(ranged(key("simple", "pressure_relaxation", T::real, none, "1.0",
+                           "Under-relaxation α_p of the pressure correction, eq. (10)."),
+                       0.0, 1.0, true, false));
+    s.push_back(ranged(key("simple", "momentum_sweeps", T::integer, none, "4",
+                           "Red-black Gauss–Seidel sweeps of the momentum equations per outer "
+                           "iteration."),
+                       1, 100, false, false));
+    s.push_back(choice(key("simple", "convection", T::string, none, "\"central\"",
+                           "Convection: central (second order, by deferred correction) or "
+                           "upwind (first order)."),
+                       {"central", "upwind"}));
+    s.push_back(choice(key("simple", "pressure_solver", T::string, none, "\"auto\"",
+                           "Pressure-correction solver: fft (direct, FFTW), hypre (PFMG-"
+                           "preconditioned CG) or auto (fft wherever the boundaries allow)."),
+                       {"auto", "fft", "hypre"}));
+    s.push_back(choice(key("simple", "fft_planning", T::string, none, "\"measure\"",
+                           "FFTW planning: measure (faster transforms; the plan may differ "
+                           "between runs in the last bits) or estimate (bit-identical reruns)."),
+                       {"measure", "estimate"}));
+    s.push_back(ranged(key("simple", "linear_tolerance", T::real, none, "1e-10",
+                           "Relative residual tolerance of the hypre pressure solver."),
+                       0.0, 1.0, true, true));
+    s.push_back(ranged(key("simple", "linear_max_iterations", T::integer, none, "200",
+                           "Iterations of the hypre pressure solver at most."),
+                       1, 100000, false, false));
+
+    s.push_back(key("output", "directory", T::string, none, "\"\"",
+                    "Run directory; empty: runs/<case file name>. `fddem run -o` overrides it."));
+    s.push_back(ranged(key("output", "field_interval", T::real, "s", "0",
+                           "Simulated time between field files (VTK); 0: the initial and "
+                           "final fields only."),
+                       0.0, inf, false, false));
+    s.push_back(ranged(key("output", "log_interval", T::integer, none, "100",
+                           "Steps between log lines when not on a terminal."),
+                       1, inf, false, false));
+
+    s.push_back(key("output.lines", "name", T::string, none, std::nullopt,
+                    "Name of a line sample, written to samples/<name>.csv (letters, digits, _ "
+                    "and -)."));
+    s.push_back(key("output.lines", "from", T::real_vector, "m", std::nullopt,
+                    "Start point of the line (inside the box)."));
+    s.push_back(key("output.lines", "to", T::real_vector, "m", std::nullopt,
+                    "End point of the line (inside the box)."));
+    s.push_back(ranged(key("output.lines", "points", T::integer, none, "101",
+                           "Number of equally spaced sample points, ends included."),
+                       2, 1000000, false, false));
+    return s;
+}
+
+std::vector<TableArraySpec> case_table_arrays()
+{
+    return {{"output.lines", "Line samples of u, v (w) and p at the end of the run."}};
+}
+
+std::string type_name(KeyType type)
+{
+    switch (type) {
+    case KeyType::real:
+        return "number";
+    case KeyType::integer:
+        return "integer";
+    case KeyType::string:
+        return "string";
+    case KeyType::boolean:
+        return "boolean";
+    case KeyType::real_vector:
+        return "[number; dim]";
+    case KeyType::integer_vector:
+        return "[integer; dim]";
+    case KeyType::boolean_vector:
+        return "[boolean; dim] or boolean";
+    }
+    return "?";
+}
+
+std::string range_text(const KeySpec& spec)
+{
+    if (!spec.choices.empty()) {
+        std::string text = "one of:";
+        for (const auto& c : spec.choices) {
+            text += (text.back() == ':' ? " " : ", ") + c;
+        }
+        return text;
+    }
+    const bool has_min = spec.min > -inf;
+    const bool has_max = spec.max < inf;
+    if (has_min && has_max) {
+        return fmt::format("{}{:g}, {:g}{}", spec.is_min_open ? "(" : "[", spec.min, spec.max,
+                           spec.is_max_open ? ")" : "]");
+    }
+    if (has_min) {
+        return fmt::format("{} {:g}", spec.is_min_open ? ">" : ">=", spec.min);
+    }
+    if (has_max) {
+        return fmt::format("{} {:g}", spec.is_max_open ? "<" : "<=", spec.max);
+    }
+    return "";
+}
+
+std::string describe_keys(bool markdown)
+{
+    std::string out;
+    if (markdown) {
+        out += "# Case-file reference\n\n"
+               "Generated by `fddem info --keys --markdown` from `src/fddem/io/case_schema.cpp`; "
+               "do not edit by hand.\n\n"
+               "A case is a TOML file. Vectors have one entry per axis (2 or 3, set by "
+               "`domain.size`). Values are dimensional, in any consistent unit system (SI "
+               "units are shown). `fddem run CASE --set section.key=value` overrides any key.\n";
+    }
+    std::string section;
+    for (const KeySpec& spec : case_schema()) {
+        if (spec.section != section) {
+            section = spec.section;
+            bool is_array = false;
+            for (const auto& t : case_table_arrays()) {
+                is_array = is_array || t.name == section;
+            }
+            const std::string header = is_array ? "[[" + section + "]]" : "[" + section + "]";
+            if (markdown) {
+                out += "\n## `" + header +
+                       "`\n\n| key | type | unit | default | range | "
+                       "meaning |\n| --- | --- | --- | --- | --- | --- |\n";
+            } else {
+                out += "\n" + header + "\n";
+            }
+        }
+        const std::string value = spec.value ? *spec.value : "required";
+        if (markdown) {
+            out += fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", spec.name,
+                               type_name(spec.type), spec.unit.empty() ? "–" : spec.unit, value,
+                               range_text(spec).empty() ? "–" : range_text(spec), spec.doc);
+        } else {
+            out += fmt::format("  {:<22} {:<16} {:<7} default {:<12} {}\n      {}\n", spec.name,
+                               type_name(spec.type), spec.unit, value, range_text(spec), spec.doc);
+        }
+    }
+    return out;
+}
+
+} // namespace fddem
