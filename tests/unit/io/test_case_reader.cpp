@@ -1,0 +1,371 @@
+// SPDX-License-Identifier: MIT
+// The case reader: a valid case reads to the expected values with defaults filled in, and
+// every kind of bad input stops with an InputError naming the file, the line and the key.
+
+#include "fddem/core/errors.hpp"
+#include "fddem/io/case_reader.hpp"
+#include "fddem/io/case_schema.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fddem {
+namespace {
+
+const std::string valid_case = R"([case]
+title = "cavity"
+[domain]
+size = [1.0, 2.0]
+cells = [16, 32]
+[walls]
+y_high = [1.0, 0.0]
+[fluid]
+density = 1.0
+viscosity = 0.01
+[time]
+dt = 0.01
+end = 1.0
+[[output.lines]]
+name = "vertical"
+from = [0.5, 0.0]
+to = [0.5, 2.0]
+)";
+
+TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
+{
+    const CaseConfig c = read_case_string(valid_case, "valid.toml");
+    EXPECT_EQ(c.dimension, 2);
+    EXPECT_EQ(c.cells, (std::vector<int>{16, 32}));
+    EXPECT_EQ(c.size, (std::vector<double>{1.0, 2.0}));
+    EXPECT_EQ(c.origin, (std::vector<double>{0.0, 0.0}));
+    EXPECT_EQ(c.periodic, (std::vector<bool>{false, false}));
+    EXPECT_DOUBLE_EQ(c.wall_velocity[1][1][0], 1.0);
+    EXPECT_DOUBLE_EQ(c.wall_velocity[0][0][1], 0.0);
+    EXPECT_DOUBLE_EQ(c.viscosity, 0.01);
+    ASSERT_TRUE(c.end_time.has_value());
+    EXPECT_DOUBLE_EQ(*c.end_time, 1.0);
+    EXPECT_FALSE(c.steady_tolerance.has_value());
+    EXPECT_DOUBLE_EQ(c.tolerance, 1e-5);
+    EXPECT_EQ(c.momentum_sweeps, 4);
+    EXPECT_EQ(c.convection, "central");
+    ASSERT_EQ(c.lines.size(), 1U);
+    EXPECT_EQ(c.lines[0].n_points, 101);
+}
+
+TEST(CaseReader, CaseAsRunReadsBackToTheSameCase)
+{
+    const CaseConfig first = read_case_string(valid_case, "valid.toml", {"time.dt=0.02"});
+    const CaseConfig second = read_case_string(first.as_run, "case.toml");
+    EXPECT_DOUBLE_EQ(second.dt, 0.02);
+    EXPECT_EQ(second.cells, first.cells);
+    EXPECT_EQ(second.as_run.substr(second.as_run.find("\n\n")),
+              first.as_run.substr(first.as_run.find("\n\n")));
+}
+
+TEST(CaseReader, OverridesSetAndAddKeys)
+{
+    const CaseConfig c = read_case_string(
+        valid_case, "valid.toml",
+        {"domain.cells=[8,8]", "simple.convection=upwind", "time.steady_tolerance=1e-6"});
+    EXPECT_EQ(c.cells, (std::vector<int>{8, 8}));
+    EXPECT_EQ(c.convection, "upwind");
+    ASSERT_TRUE(c.steady_tolerance.has_value());
+    EXPECT_DOUBLE_EQ(*c.steady_tolerance, 1e-6);
+}
+
+TEST(CaseReader, ThreeDimensionalCaseNeedsThreeEntriesEverywhere)
+{
+    const std::string text = R"([domain]
+size = [1.0, 1.0, 1.0]
+cells = [8, 8, 8]
+periodic = [true, false, true]
+[fluid]
+density = 1.0
+viscosity = 1.0
+[time]
+dt = 0.1
+end = 1.0
+)";
+    const CaseConfig c = read_case_string(text, "3d.toml");
+    EXPECT_EQ(c.dimension, 3);
+    EXPECT_EQ(c.periodic, (std::vector<bool>{true, false, true}));
+    EXPECT_EQ(c.wall_velocity.size(), 3U);
+}
+
+struct BadCase {
+    const char* name;
+    std::string text;                   ///< the case text
+    std::vector<std::string> overrides; ///< --set values
+    std::string file;                   ///< expected file in the message
+    int line;                           ///< expected line (0: none)
+    std::string key;                    ///< expected key
+    std::string message;                ///< expected substring
+};
+
+std::string replace(std::string text, const std::string& from, const std::string& to)
+{
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+}
+
+std::vector<BadCase> bad_cases()
+{
+    const std::string v = valid_case;
+    const std::string f = "bad.toml";
+    return {
+        {"syntax",
+         replace(v, "density = 1.0", "density = = 1.0"),
+         {},
+         f,
+         9,
+         "",
+         "TOML syntax error"},
+        {"unknown_section", v + "[fluids]\nx = 1\n", {}, f, 18, "fluids", "did you mean 'fluid'"},
+        {"misspelt_key",
+         replace(v, "viscosity = 0.01", "viscosty = 0.01"),
+         {},
+         f,
+         10,
+         "fluid.viscosty",
+         "did you mean 'fluid.viscosity'"},
+        {"unknown_key_far",
+         replace(v, "viscosity = 0.01", "viscosity = 0.01\ncolour = 3"),
+         {},
+         f,
+         11,
+         "fluid.colour",
+         "unknown key"},
+        {"missing_required",
+         replace(v, "viscosity = 0.01\n", ""),
+         {},
+         f,
+         8,
+         "fluid.viscosity",
+         "missing required key"},
+        {"missing_size",
+         replace(v, "size = [1.0, 2.0]\n", ""),
+         {},
+         f,
+         3,
+         "domain.size",
+         "missing required key"},
+        {"string_for_number",
+         replace(v, "density = 1.0", "density = \"one\""),
+         {},
+         f,
+         9,
+         "fluid.density",
+         "expected number"},
+        {"zero_viscosity",
+         replace(v, "viscosity = 0.01", "viscosity = 0.0"),
+         {},
+         f,
+         10,
+         "fluid.viscosity",
+         "out of range: must be > 0"},
+        {"negative_density",
+         replace(v, "density = 1.0", "density = -1.0"),
+         {},
+         f,
+         9,
+         "fluid.density",
+         "out of range"},
+        {"negative_dt",
+         replace(v, "dt = 0.01", "dt = -0.01"),
+         {},
+         f,
+         12,
+         "time.dt",
+         "out of range"},
+        {"nan_dt", replace(v, "dt = 0.01", "dt = nan"), {}, f, 12, "time.dt", "finite"},
+        {"float_cells",
+         replace(v, "cells = [16, 32]", "cells = [16.5, 32]"),
+         {},
+         f,
+         5,
+         "domain.cells",
+         "expected [integer; dim]"},
+        {"too_few_cells",
+         replace(v, "cells = [16, 32]", "cells = [2, 32]"),
+         {},
+         f,
+         5,
+         "domain.cells",
+         "out of range"},
+        {"wrong_length",
+         replace(v, "cells = [16, 32]", "cells = [16, 32, 8]"),
+         {},
+         f,
+         5,
+         "domain.cells",
+         "this 2D case needs 2"},
+        {"four_dimensions",
+         replace(v, "size = [1.0, 2.0]", "size = [1.0, 2.0, 1.0, 1.0]"),
+         {},
+         f,
+         4,
+         "domain.size",
+         "2 (2D) or 3 (3D)"},
+        {"bad_choice",
+         v + "[simple]\nconvection = \"centrall\"\n",
+         {},
+         f,
+         19,
+         "simple.convection",
+         "did you mean 'central'"},
+        {"relaxation_above_one",
+         v + "[simple]\nvelocity_relaxation = 1.5\n",
+         {},
+         f,
+         19,
+         "simple.velocity_relaxation",
+         "out of range"},
+        {"no_way_to_stop",
+         replace(v, "end = 1.0\n", ""),
+         {},
+         f,
+         11,
+         "time.end",
+         "the run needs a way to stop"},
+        {"dt_longer_than_end",
+         replace(v, "dt = 0.01", "dt = 2.0"),
+         {},
+         f,
+         12,
+         "time.dt",
+         "longer than the end time"},
+        {"normal_wall_velocity",
+         replace(v, "y_high = [1.0, 0.0]", "y_high = [1.0, 0.5]"),
+         {},
+         f,
+         7,
+         "walls.y_high",
+         "wall-normal component"},
+        {"wall_on_periodic_axis",
+         replace(v, "cells = [16, 32]", "cells = [16, 32]\nperiodic = [false, true]"),
+         {},
+         f,
+         8,
+         "walls.y_high",
+         "is periodic"},
+        {"z_wall_in_2d",
+         replace(v, "y_high = [1.0, 0.0]", "z_low = [0.0, 0.0]"),
+         {},
+         f,
+         7,
+         "walls.z_low",
+         "no z walls"},
+        {"line_outside",
+         replace(v, "to = [0.5, 2.0]", "to = [0.5, 2.5]"),
+         {},
+         f,
+         17,
+         "output.lines.to",
+         "outside the box"},
+        {"line_bad_name",
+         replace(v, "name = \"vertical\"", "name = \"a b\""),
+         {},
+         f,
+         15,
+         "output.lines.name",
+         "not a valid sample name"},
+        {"line_duplicate_name",
+         v + "[[output.lines]]\nname = \"vertical\"\nfrom = [0.0, 0.0]\nto = [1.0, 0.0]\n",
+         {},
+         f,
+         19,
+         "output.lines.name",
+         "used twice"},
+        {"line_missing_from",
+         replace(v, "from = [0.5, 0.0]\n", ""),
+         {},
+         f,
+         14,
+         "output.lines.from",
+         "missing required key"},
+        {"line_unknown_key",
+         replace(v, "from = [0.5, 0.0]", "from = [0.5, 0.0]\nstep = 1"),
+         {},
+         f,
+         17,
+         "output.lines.step",
+         "unknown key"},
+        {"section_not_table",
+         "case = 3\n" + v.substr(v.find("[domain]")),
+         {},
+         f,
+         1,
+         "case",
+         "must be a section"},
+        {"set_syntax", v, {"time.dt"}, "--set", 0, "time.dt", "expected section.key=value"},
+        {"set_unknown_key", v, {"time.dtt=1"}, "--set", 0, "time.dtt", "did you mean 'time.dt'"},
+        {"set_out_of_range", v, {"time.dt=0"}, "--set", 0, "time.dt", "out of range"},
+        {"set_wrong_type",
+         v,
+         {"domain.cells=[1.5,2]"},
+         "--set",
+         0,
+         "domain.cells",
+         "expected [integer; dim]"},
+    };
+}
+
+class BadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadInput, StopsWithOneClearMessage)
+{
+    const BadCase& bad = GetParam();
+    try {
+        (void)read_case_string(bad.text, "bad.toml", bad.overrides);
+        FAIL() << "no error for " << bad.name;
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), bad.file);
+        EXPECT_EQ(e.line(), bad.line) << e.formatted();
+        EXPECT_EQ(e.key(), bad.key) << e.formatted();
+        EXPECT_NE(std::string(e.what()).find(bad.message), std::string::npos) << e.formatted();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(CaseReader, BadInput, ::testing::ValuesIn(bad_cases()),
+                         [](const auto& param_info) { return std::string(param_info.param.name); });
+
+TEST(CaseReader, MissingFileIsAnInputError)
+{
+    EXPECT_THROW((void)read_case("/nonexistent/case.toml"), InputError);
+}
+
+TEST(CaseReader, EditDistanceCountsSingleEdits)
+{
+    EXPECT_EQ(edit_distance("viscosity", "viscosty"), 1U);
+    EXPECT_EQ(edit_distance("", "abc"), 3U);
+    EXPECT_EQ(edit_distance("kitten", "sitting"), 3U);
+}
+
+TEST(CaseSchema, EveryKeyIsDocumentedOnceWithARange)
+{
+    const auto schema = case_schema();
+    for (std::size_t i = 0; i < schema.size(); ++i) {
+        EXPECT_FALSE(schema[i].doc.empty()) << schema[i].full_name();
+        for (std::size_t j = i + 1; j < schema.size(); ++j) {
+            EXPECT_NE(schema[i].full_name(), schema[j].full_name());
+        }
+    }
+}
+
+TEST(CaseSchema, DocsCaseFileIsUpToDate)
+{
+    std::ifstream in(std::string(FDDEM_SOURCE_DIR) + "/docs/case-file.md");
+    ASSERT_TRUE(in)
+        << "docs/case-file.md is missing: fddem info --keys --markdown > docs/case-file.md";
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str(), describe_keys(true))
+        << "regenerate with: fddem info --keys --markdown > docs/case-file.md";
+}
+
+} // namespace
+} // namespace fddem
