@@ -56,9 +56,15 @@ int main(int argc, char** argv)
 
     try {
         app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        const int status = app.exit(e);
-        return status == 0 ? exit_success : exit_bad_input;
+        std::fprintf(stderr, "fddem: command line: %s (see fddem --help)\n", e.what());
+        return exit_bad_input;
     }
 
     int n_processes = 1;

@@ -1,0 +1,166 @@
+// SPDX-License-Identifier: MIT
+// The fddem program as a user meets it: a small run writes every documented output; bad input
+// of every class ends with one message, exit status 2, and nothing written.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+    int status;
+    std::string output; ///< stdout and stderr
+};
+
+Result run(const std::string& arguments)
+{
+    const fs::path log = fs::temp_directory_path() / ("fddem_cli_" + std::to_string(::getpid()));
+    const std::string command =
+        std::string(FDDEM_EXECUTABLE) + " " + arguments + " > " + log.string() + " 2>&1";
+    const int raw = std::system(command.c_str());
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    fs::remove(log);
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        root_ = fs::temp_directory_path() /
+                ("fddem_cli_test_" + std::to_string(::getpid()) + "_" +
+                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(root_);
+        fs::create_directories(root_);
+        case_file_ = root_ / "cavity.toml";
+        std::ofstream(case_file_) << R"([domain]
+size = [1.0, 1.0]
+cells = [16, 16]
+[walls]
+y_high = [1.0, 0.0]
+[fluid]
+density = 1.0
+viscosity = 0.01
+[time]
+dt = 0.0625
+end = 0.5
+[output]
+field_interval = 0.25
+[[output.lines]]
+name = "vertical_centerline"
+from = [0.5, 0.0]
+to = [0.5, 1.0]
+points = 17
+)";
+    }
+    void TearDown() override { fs::remove_all(root_); }
+
+    fs::path root_;
+    fs::path case_file_;
+};
+
+TEST_F(Cli, SmallRunWritesEveryDocumentedOutput)
+{
+    const fs::path out = root_ / "run";
+    const Result r = run("run " + case_file_.string() + " -o " + out.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (const char* file :
+         {"case.toml", "solver.csv", "summary.json", "fields.pvd", "fields/fields_000000.vtr",
+          "fields/fields_000002.vtr", "samples/vertical_centerline.csv"}) {
+        EXPECT_TRUE(fs::exists(out / file)) << file;
+    }
+    std::ifstream solver(out / "solver.csv");
+    std::string header;
+    std::getline(solver, header);
+    EXPECT_EQ(header, "step,time,dt,outer_iterations,total_outer_iterations,is_converged,"
+                      "mass_residual,momentum_residual,courant,rate_of_change,wall_seconds");
+    int rows = 0;
+    for (std::string line; std::getline(solver, line);) {
+        ++rows;
+    }
+    EXPECT_EQ(rows, 8); // 0.5 / 0.0625 steps
+    std::ifstream samples(out / "samples/vertical_centerline.csv");
+    std::getline(samples, header);
+    EXPECT_EQ(header, "x,y,u,v,p");
+}
+
+TEST_F(Cli, ExistingRunDirectoryIsKeptWithoutForce)
+{
+    const fs::path out = root_ / "run";
+    fs::create_directories(out);
+    std::ofstream(out / "precious.txt") << "keep me";
+    const Result r = run("run " + case_file_.string() + " -o " + out.string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("use --force"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out / "solver.csv"));
+    std::ifstream kept(out / "precious.txt");
+    std::string text;
+    std::getline(kept, text);
+    EXPECT_EQ(text, "keep me");
+}
+
+struct BadRun {
+    const char* name;
+    std::string extra;   ///< arguments after the case file
+    std::string message; ///< expected in the one error line
+};
+
+class CliBadInput : public Cli, public ::testing::WithParamInterface<BadRun> {};
+
+TEST_P(CliBadInput, ExitsWithStatusTwoAndWritesNothing)
+{
+    const BadRun& bad = GetParam();
+    const fs::path out = root_ / "run";
+    std::string arguments = "run " + case_file_.string() + " " + bad.extra;
+    if (bad.extra.find("-o ") == std::string::npos) {
+        arguments += " -o " + out.string();
+    }
+    const Result r = run(arguments);
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find(bad.message), std::string::npos) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(fs::exists(out)) << "something was written for " << bad.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cli, CliBadInput,
+    ::testing::Values(
+        BadRun{"misspelt_override", "--set fluid.viscosty=0.1", "did you mean 'fluid.viscosity'"},
+        BadRun{"negative_viscosity", "--set fluid.viscosity=-1",
+               "fluid.viscosity: -1 Pa·s is out of range"},
+        BadRun{"zero_dt", "--set time.dt=0", "time.dt: 0 s is out of range"},
+        BadRun{"bad_solver", "--set simple.pressure_solver=petsc",
+               "must be one of: auto, fft, hypre"},
+        BadRun{"unwritable_output", "-o /proc/fddem/run", "cannot create the run directory"},
+        BadRun{"unknown_option", "--frobnicate", "frobnicate"}),
+    [](const auto& param_info) { return std::string(param_info.param.name); });
+
+TEST_F(Cli, MissingCaseFileIsBadInput)
+{
+    const Result r = run("run " + (root_ / "nope.toml").string());
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("cannot open the case file"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, InfoListsKeysAndLibraries)
+{
+    const Result keys = run("info --keys");
+    EXPECT_EQ(keys.status, 0);
+    EXPECT_NE(keys.output.find("viscosity"), std::string::npos);
+    const Result info = run("info");
+    EXPECT_EQ(info.status, 0);
+    EXPECT_NE(info.output.find("hypre"), std::string::npos);
+    EXPECT_NE(info.output.find("fftw"), std::string::npos);
+}
+
+} // namespace
