@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <unistd.h>
 
 #include "commands.hpp"
@@ -72,8 +73,15 @@ public:
                           {"step", "time", "dt", "outer_iterations", "total_outer_iterations",
                            "is_converged", "mass_residual", "momentum_residual", "courant",
                            "rate_of_change", "wall_seconds"});
+        if (!sim_.bodies().empty()) {
+            particles_ =
+                std::make_unique<CsvHistory>(directory_ / "particles.csv", particle_columns());
+            write_particles();
+        }
+        report_derived();
         const auto start = std::chrono::steady_clock::now();
         write_fields();
+        double next_particle_time = config_.particle_interval;
         double next_field_time = config_.field_interval;
         StepReport report;
         int status = exit_success;
@@ -91,6 +99,10 @@ public:
                                report.rate_of_change, wall});
                 watch(report);
                 progress_.update(clock.step, clock.time, report.outer_iterations);
+                if (particles_ && clock.time >= next_particle_time - 0.5 * clock.dt) {
+                    write_particles();
+                    next_particle_time += config_.particle_interval;
+                }
                 if (config_.field_interval > 0.0 &&
                     clock.time >= next_field_time - 0.5 * clock.dt) {
                     write_fields();
@@ -128,6 +140,70 @@ public:
     }
 
 private:
+    static std::vector<std::string> particle_columns()
+    {
+        if constexpr (Dim == 2) {
+            return {"time", "id", "x", "y", "u", "v", "omega", "theta", "fx", "fy", "torque"};
+        } else {
+            return {"time", "id", "x",        "y",        "z",       "u",
+                    "v",    "w",  "omega_x",  "omega_y",  "omega_z", "fx",
+                    "fy",   "fz", "torque_x", "torque_y", "torque_z"};
+        }
+    }
+
+    void write_particles()
+    {
+        for (const RigidBody<Dim>& b : sim_.bodies()) {
+            std::vector<double> row;
+            row.reserve(particle_columns().size());
+            row.push_back(sim_.clock().time);
+            row.push_back(static_cast<double>(b.id));
+            for (int d = 0; d < Dim; ++d) {
+                row.push_back(b.centre[d]);
+            }
+            for (int d = 0; d < Dim; ++d) {
+                row.push_back(b.velocity[d]);
+            }
+            if constexpr (Dim == 2) {
+                for (const double x : {b.omega, b.angle, b.force[0], b.force[1], b.torque}) {
+                    row.push_back(x);
+                }
+            } else {
+                for (int d = 0; d < 3; ++d) {
+                    row.push_back(b.omega[d]);
+                }
+                for (int d = 0; d < 3; ++d) {
+                    row.push_back(b.force[d]);
+                }
+                for (int d = 0; d < 3; ++d) {
+                    row.push_back(b.torque[d]);
+                }
+            }
+            particles_->append(row);
+        }
+    }
+
+    /// Says what [nondimensional] made of the case (the values are also in case.toml).
+    void report_derived()
+    {
+        if (!config_.reynolds) {
+            return;
+        }
+        std::string text =
+            fmt::format("fddem: derived from [nondimensional] (Re = {:g}", *config_.reynolds);
+        if (config_.density_ratio) {
+            text += fmt::format(", density ratio {:g}, W/D = {:g}): viscosity {:.6g}, body "
+                                "density {:.6g}, gravity {:.6g}, wall factor K = {:.6f}",
+                                *config_.density_ratio,
+                                config_.size[0] / config_.bodies.front().diameter,
+                                config_.viscosity, config_.bodies.front().density,
+                                -config_.gravity[1], config_.wall_factor);
+        } else {
+            text += fmt::format("): viscosity {:.6g}", config_.viscosity);
+        }
+        progress_.message(text);
+    }
+
     void watch(const StepReport& report)
     {
         if (!report.is_converged) {
@@ -204,8 +280,20 @@ private:
         }
         summary.set_phase_seconds("momentum", sim_.momentum_seconds());
         summary.set_phase_seconds("pressure", sim_.pressure_seconds());
-        summary.set_phase_seconds("other",
-                                  stepping - sim_.momentum_seconds() - sim_.pressure_seconds());
+        summary.set_phase_seconds("coupling", sim_.coupling_seconds());
+        summary.set_phase_seconds("other", stepping - sim_.momentum_seconds() -
+                                               sim_.pressure_seconds() - sim_.coupling_seconds());
+        if (!config_.bodies.empty()) {
+            summary.set("bodies", static_cast<long>(config_.bodies.size()));
+            summary.set("markers_per_body",
+                        static_cast<long>(sim_.couplings().front().markers.size()));
+            summary.set("last_rigid_defect", last.rigid_defect);
+            if (config_.reynolds) {
+                summary.set("characteristic_velocity", config_.characteristic_velocity);
+                summary.set("characteristic_time",
+                            config_.bodies.front().diameter / config_.characteristic_velocity);
+            }
+        }
         summary.write(directory_ / "summary.json");
     }
 
@@ -214,6 +302,7 @@ private:
     fs::path directory_;
     Progress progress_;
     PvdCollection pvd_;
+    std::unique_ptr<CsvHistory> particles_;
     long total_outer_ = 0;
     long n_unconverged_ = 0;
     double max_courant_ = 0.0;

@@ -3,6 +3,7 @@
 /// Small fixed-size vectors typed by dimension (STYLE.md §4).
 
 #include <Eigen/Core>
+#include <Eigen/Geometry> // cross products
 
 namespace fddem {
 

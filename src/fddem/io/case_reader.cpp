@@ -3,6 +3,7 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/io/case_schema.hpp"
+#include "fddem/io/nondimensional.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -90,6 +91,9 @@ bool is_table_array(const std::string& section)
 const toml::array* find_table_array(const toml::table& doc, const std::string& path)
 {
     const auto dot = path.find('.');
+    if (dot == std::string::npos) {
+        return doc.get_as<toml::array>(path);
+    }
     const toml::table* parent = doc.get_as<toml::table>(path.substr(0, dot));
     return parent == nullptr ? nullptr : parent->get_as<toml::array>(path.substr(dot + 1));
 }
@@ -280,6 +284,8 @@ public:
         fill_defaults_and_check();
         CaseConfig c = convert();
         check_contradictions(c);
+        derive(c);
+        check_bodies(c);
         std::ostringstream as_run;
         as_run << "# The case as run by fddem: defaults filled in and --set overrides applied.\n"
                << "# Source: " << where_.file() << "\n\n"
@@ -314,6 +320,10 @@ private:
             if (!is_known) {
                 where_.fail(section, &value,
                             "unknown section '" + section + "'" + suggestion(section, sections));
+            }
+            if (is_table_array(section)) {
+                check_table_array(section, value, full_names);
+                continue;
             }
             const toml::table* table = value.as_table();
             if (table == nullptr) {
@@ -391,6 +401,7 @@ private:
                 }
                 doc_.get_as<toml::table>(spec.section)
                     ->insert(spec.name, *default_node(spec, dimension_).get("v"));
+                defaulted_.insert(spec.full_name());
                 continue;
             }
             check_value(spec, *n, dimension_, where_, spec.full_name());
@@ -413,7 +424,9 @@ private:
                                         "missing required key '" + spec.name + "' in [[" + t.name +
                                             "]]");
                         }
-                        entry.insert(spec.name, *default_node(spec, dimension_).get("v"));
+                        if (*spec.value != "none") {
+                            entry.insert(spec.name, *default_node(spec, dimension_).get("v"));
+                        }
                         continue;
                     }
                     check_value(spec, *n, dimension_, where_, spec.full_name());
@@ -447,7 +460,7 @@ private:
                 {as_reals(*node("walls", walls[d][0])), as_reals(*node("walls", walls[d][1]))});
         }
         c.density = real("fluid", "density");
-        c.viscosity = real("fluid", "viscosity");
+        c.viscosity = node("fluid", "viscosity") != nullptr ? real("fluid", "viscosity") : 0.0;
         c.gravity = as_reals(*node("fluid", "gravity"));
         c.body_force = as_reals(*node("fluid", "body_force"));
         c.dt = real("time", "dt");
@@ -471,6 +484,32 @@ private:
         c.output_directory = text("output", "directory");
         c.field_interval = real("output", "field_interval");
         c.log_interval = integer("output", "log_interval");
+        c.particle_interval = real("output", "particle_interval");
+        c.kernel = text("coupling", "kernel");
+        c.marker_spacing_ratio = real("coupling", "marker_spacing_ratio");
+        if (node("nondimensional", "reynolds") != nullptr) {
+            c.reynolds = real("nondimensional", "reynolds");
+        }
+        if (node("nondimensional", "density_ratio") != nullptr) {
+            c.density_ratio = real("nondimensional", "density_ratio");
+        }
+        c.characteristic_velocity = real("nondimensional", "velocity");
+        if (const toml::array* bodies = find_table_array(doc_, "bodies")) {
+            for (const toml::node& element : *bodies) {
+                const toml::table& t = *element.as_table();
+                BodyConfig b;
+                b.shape = t.get("shape")->value<std::string>().value_or("disk");
+                b.diameter = t.get("diameter")->value<double>().value_or(0.0);
+                b.density =
+                    t.contains("density") ? t.get("density")->value<double>().value_or(0.0) : 0.0;
+                b.position = as_reals(*t.get("position"));
+                b.velocity = as_reals(*t.get("velocity"));
+                b.omega = t.get("omega")->value<double>().value_or(0.0);
+                b.motion = t.get("motion")->value<std::string>().value_or("free");
+                b.n_rings = static_cast<int>(t.get("n_rings")->value<std::int64_t>().value_or(0));
+                c.bodies.push_back(b);
+            }
+        }
         if (const toml::array* lines = find_table_array(doc_, "output.lines")) {
             for (const toml::node& element : *lines) {
                 const toml::table& t = *element.as_table();
@@ -484,6 +523,136 @@ private:
             }
         }
         return c;
+    }
+
+    /// [nondimensional] → viscosity, body densities, gravity (eqs. 19–22), recorded in
+    /// [derived] of the case as run.
+    void derive(CaseConfig& c)
+    {
+        const toml::node* re = node("nondimensional", "reynolds");
+        const toml::node* ratio = node("nondimensional", "density_ratio");
+        const bool has_viscosity = node("fluid", "viscosity") != nullptr;
+        if (c.reynolds && has_viscosity) {
+            where_.fail("fluid.viscosity", node("fluid", "viscosity"),
+                        "give either fluid.viscosity or nondimensional.reynolds, not both");
+        }
+        if (!c.reynolds && !has_viscosity) {
+            where_.fail("fluid.viscosity", doc_.get("fluid"),
+                        "missing required key 'fluid.viscosity' (or give nondimensional.reynolds)");
+        }
+        if (c.density_ratio && !c.reynolds) {
+            where_.fail("nondimensional.density_ratio", ratio,
+                        "nondimensional.density_ratio needs nondimensional.reynolds (eq. 22 uses "
+                        "both)");
+        }
+        const toml::array* bodies = find_table_array(doc_, "bodies");
+        for (std::size_t k = 0; k < c.bodies.size(); ++k) {
+            const toml::table& t = *(*bodies)[k].as_table();
+            if (c.density_ratio && t.contains("density")) {
+                where_.fail("bodies.density", t.get("density"),
+                            "give either bodies.density or nondimensional.density_ratio, not both");
+            }
+            if (!c.density_ratio && !t.contains("density")) {
+                where_.fail("bodies.density", &(*bodies)[k],
+                            "missing required key 'density' in [[bodies]] (or give "
+                            "nondimensional.density_ratio)");
+            }
+        }
+        if (!c.reynolds) {
+            return;
+        }
+        if (c.bodies.empty()) {
+            where_.fail("nondimensional.reynolds", re,
+                        "[nondimensional] needs a body: its diameter is the length scale");
+        }
+        const double diameter = c.bodies.front().diameter;
+        if (!c.density_ratio) {
+            c.viscosity = c.density * c.characteristic_velocity * diameter / *c.reynolds;
+        } else {
+            if (std::abs(*c.density_ratio - 1.0) < 1e-12) {
+                where_.fail("nondimensional.density_ratio", ratio,
+                            "a density ratio of 1 gives no settling velocity scale (eq. 21); give "
+                            "fluid.viscosity, fluid.gravity and bodies.density instead");
+            }
+            const toml::node* gravity = node("fluid", "gravity");
+            if (gravity != nullptr && defaulted_.count("fluid.gravity") == 0) {
+                where_.fail("fluid.gravity", gravity,
+                            "fluid.gravity is derived from [nondimensional] (eq. 21); do not give "
+                            "both");
+            }
+            const DerivedScales scales =
+                derive_scales(*c.reynolds, *c.density_ratio, c.size[0] / diameter, c.density,
+                              diameter, c.characteristic_velocity);
+            c.viscosity = scales.viscosity;
+            c.wall_factor = scales.wall_factor;
+            for (BodyConfig& b : c.bodies) {
+                b.density = scales.body_density;
+            }
+            c.gravity.assign(static_cast<std::size_t>(dimension_), 0.0);
+            c.gravity[1] = -scales.gravity; // settling along −y
+            toml::array g;
+            for (const double x : c.gravity) {
+                g.push_back(x);
+            }
+            derived_.insert_or_assign("gravity", g);
+            derived_.insert_or_assign("body_density", scales.body_density);
+            derived_.insert_or_assign("wall_factor", scales.wall_factor);
+        }
+        derived_.insert_or_assign("viscosity", c.viscosity);
+        doc_.insert_or_assign("derived", derived_);
+    }
+
+    /// Bodies: the right shape for the dimension, inside the box, apart, resolved by the grid.
+    void check_bodies(const CaseConfig& c) const
+    {
+        const toml::array* bodies = find_table_array(doc_, "bodies");
+        double h = c.size[0] / c.cells[0];
+        for (int d = 1; d < dimension_; ++d) {
+            h = std::max(h, c.size[static_cast<std::size_t>(d)] /
+                                c.cells[static_cast<std::size_t>(d)]);
+        }
+        for (std::size_t k = 0; k < c.bodies.size(); ++k) {
+            const BodyConfig& b = c.bodies[k];
+            const toml::table& t = *(*bodies)[k].as_table();
+            if ((b.shape == "disk") != (dimension_ == 2)) {
+                where_.fail("bodies.shape", t.get("shape"),
+                            "a " + b.shape + " does not fit a " + std::to_string(dimension_) +
+                                "D case (disk: 2D, sphere: 3D)");
+            }
+            if (b.diameter < 4.0 * h) {
+                where_.fail("bodies.diameter", t.get("diameter"),
+                            fmt::format("the body is {:.2g} cells across; at least 4 are needed "
+                                        "for the marker layout (refine domain.cells)",
+                                        b.diameter / h));
+            }
+            const double r = 0.5 * b.diameter;
+            for (int d = 0; d < dimension_; ++d) {
+                const auto dd = static_cast<std::size_t>(d);
+                if (c.periodic[dd]) {
+                    continue;
+                }
+                const double lo = c.origin[dd];
+                const double hi = c.origin[dd] + c.size[dd];
+                if (b.position[dd] - r < lo || b.position[dd] + r > hi) {
+                    where_.fail("bodies.position", t.get("position"),
+                                fmt::format("body {} reaches outside the box on axis {} (centre "
+                                            "{:g}, radius {:g}, box [{:g}, {:g}])",
+                                            k, d, b.position[dd], r, lo, hi));
+                }
+            }
+            for (std::size_t j = 0; j < k; ++j) {
+                const BodyConfig& o = c.bodies[j];
+                double distance2 = 0.0;
+                for (int d = 0; d < dimension_; ++d) {
+                    const auto dd = static_cast<std::size_t>(d);
+                    distance2 += std::pow(b.position[dd] - o.position[dd], 2);
+                }
+                if (std::sqrt(distance2) < 0.5 * (b.diameter + o.diameter)) {
+                    where_.fail("bodies.position", t.get("position"),
+                                fmt::format("body {} overlaps body {}", k, j));
+                }
+            }
+        }
     }
 
     void check_contradictions(const CaseConfig& c) const
@@ -503,7 +672,7 @@ private:
             for (int side = 0; side < 2; ++side) {
                 const std::string key = std::string("walls.") + walls[d][side];
                 const toml::node* n = node("walls", walls[d][side]);
-                const bool is_given = n != nullptr && n->source().begin.line > 0;
+                const bool is_given = n != nullptr && defaulted_.count(key) == 0;
                 if (c.periodic[static_cast<std::size_t>(d)] && is_given) {
                     where_.fail(key, n,
                                 "axis " + std::to_string(d) +
@@ -558,6 +727,8 @@ private:
 
     std::vector<KeySpec> schema_ = case_schema();
     toml::table doc_;
+    toml::table derived_;
+    std::set<std::string> defaulted_; ///< keys whose value is the schema's default
     Locator where_;
     int dimension_ = 2;
 };

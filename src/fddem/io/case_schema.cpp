@@ -71,7 +71,9 @@ std::vector<KeySpec> case_schema()
     s.push_back(
         positive(key("fluid", "density", T::real, "kg/m³", std::nullopt, "Fluid density ρf.")));
     s.push_back(
-        positive(key("fluid", "viscosity", T::real, "Pa·s", std::nullopt, "Dynamic viscosity μ.")));
+        positive(key("fluid", "viscosity", T::real, "Pa·s", "none",
+                     "Dynamic viscosity μ; required unless [nondimensional] gives reynolds, "
+                     "from which it is derived.")));
     s.push_back(key("fluid", "gravity", T::real_vector, "m/s²", "zeros",
                     "Gravitational acceleration; it acts on particles only (buoyancy-reduced "
                     "weight), the fluid's hydrostatic pressure is not computed."));
@@ -127,11 +129,66 @@ std::vector<KeySpec> case_schema()
                            "Iterations of the hypre pressure solver at most."),
                        1, 100000, false, false));
 
+    s.push_back(choice(key("bodies", "shape", T::string, none, "\"disk\"",
+                           "Body shape: disk (2D) or sphere (3D)."),
+                       {"disk", "sphere"}));
+    s.push_back(positive(key("bodies", "diameter", T::real, "m", std::nullopt, "Diameter D.")));
+    s.push_back(positive(key("bodies", "density", T::real, "kg/m³", "none",
+                             "Body density ρs; required unless nondimensional.density_ratio "
+                             "gives it.")));
+    s.push_back(key("bodies", "position", T::real_vector, "m", std::nullopt,
+                    "Initial centre (inside the box, clear of walls and other bodies)."));
+    s.push_back(key("bodies", "velocity", T::real_vector, "m/s", "zeros",
+                    "Initial velocity; for motion = \"prescribed\" the velocity kept."));
+    s.push_back(key("bodies", "omega", T::real, "rad/s", "0.0",
+                    "Initial angular velocity about z (2D); kept for prescribed motion."));
+    s.push_back(choice(key("bodies", "motion", T::string, none, "\"free\"",
+                           "free (moved by fluid and gravity), prescribed (keeps its velocity), "
+                           "fixed (at rest)."),
+                       {"free", "prescribed", "fixed"}));
+    s.push_back(ranged(key("bodies", "n_rings", T::integer, none, "0",
+                           "Marker rings N_a (paper Fig. 1: 1 + 3 N_a (N_a + 1) markers); 0: "
+                           "from coupling.marker_spacing_ratio."),
+                       0, 1000, false, false));
+
+    s.push_back(choice(key("coupling", "kernel", T::string, none, "\"hat\"",
+                           "Discrete delta function: hat (the paper's linear d_h), roma3 (Roma, "
+                           "Peskin & Berger 1999), peskin4 (Peskin 2002)."),
+                       {"hat", "roma3", "peskin4"}));
+    s.push_back(ranged(key("coupling", "marker_spacing_ratio", T::real, none, "1.4",
+                           "Target marker spacing h_L / h when bodies.n_rings is 0 (paper §3.1 "
+                           "recommends about 1.45)."),
+                       0.5, 10.0, false, false));
+
+    s.push_back(positive(key("nondimensional", "reynolds", T::real, none, "none",
+                             "Re = ρf U_c D / μ (D: the first body's diameter); fddem derives "
+                             "fluid.viscosity.")));
+    s.push_back(ranged(key("nondimensional", "density_ratio", T::real, none, "none",
+                           "ρr = ρs / ρf; with reynolds, fddem derives every body's density and "
+                           "the gravity of eqs. (21)–(22) (Happel & Brenner wall factor K)."),
+                       0.0, inf, true, false));
+    s.push_back(positive(key("nondimensional", "velocity", T::real, "m/s", "1.0",
+                             "Characteristic velocity U_c of eq. (21).")));
+
+    s.push_back(key("derived", "viscosity", T::real, "Pa·s", "none",
+                    "Written by fddem into case.toml when derived from [nondimensional]; "
+                    "ignored on input."));
+    s.push_back(key("derived", "gravity", T::real_vector, "m/s²", "none",
+                    "Written by fddem when derived (eq. 21–22); ignored on input."));
+    s.push_back(key("derived", "body_density", T::real, "kg/m³", "none",
+                    "Written by fddem when derived from the density ratio; ignored on input."));
+    s.push_back(key("derived", "wall_factor", T::real, none, "none",
+                    "Happel & Brenner wall factor K of eq. (20), written by fddem; ignored on "
+                    "input."));
+
     s.push_back(key("output", "directory", T::string, none, "\"\"",
                     "Run directory; empty: runs/<case file name>. `fddem run -o` overrides it."));
     s.push_back(ranged(key("output", "field_interval", T::real, "s", "0",
                            "Simulated time between field files (VTK); 0: the initial and "
                            "final fields only."),
+                       0.0, inf, false, false));
+    s.push_back(ranged(key("output", "particle_interval", T::real, "s", "0",
+                           "Simulated time between rows of particles.csv; 0: every step."),
                        0.0, inf, false, false));
     s.push_back(ranged(key("output", "log_interval", T::integer, none, "100",
                            "Steps between log lines when not on a terminal."),
@@ -152,7 +209,8 @@ std::vector<KeySpec> case_schema()
 
 std::vector<TableArraySpec> case_table_arrays()
 {
-    return {{"output.lines", "Line samples of u, v (w) and p at the end of the run."}};
+    return {{"output.lines", "Line samples of u, v (w) and p at the end of the run."},
+            {"bodies", "Rigid particles."}};
 }
 
 std::string type_name(KeyType type)

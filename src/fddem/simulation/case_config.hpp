@@ -18,6 +18,18 @@ struct LineSample {
     int n_points = 101;
 };
 
+/// One [[bodies]] entry.
+struct BodyConfig {
+    std::string shape = "disk";   ///< "disk" (2D) or "sphere" (3D)
+    double diameter = 1.0;        ///< [m]
+    double density = 1.0;         ///< ρs [kg/m³]
+    std::vector<double> position; ///< centre [m]
+    std::vector<double> velocity; ///< initial (or prescribed) U [m/s]
+    double omega = 0.0;           ///< initial (or prescribed) ω [rad/s] (2D)
+    std::string motion = "free";  ///< "free", "prescribed" or "fixed"
+    int n_rings = 0;              ///< N_a; 0: from coupling.marker_spacing_ratio
+};
+
 struct CaseConfig {
     std::string source_file; ///< the case file path, for messages
     std::string as_run;      ///< the whole case as TOML, defaults and overrides filled in
@@ -57,10 +69,22 @@ struct CaseConfig {
     double linear_tolerance = 1e-10;      ///< hypre relative residual tolerance
     int linear_max_iterations = 200;
 
+    // [[bodies]], [coupling]
+    std::vector<BodyConfig> bodies;
+    std::string kernel = "hat";        ///< delta kernel: "hat", "roma3", "peskin4"
+    double marker_spacing_ratio = 1.4; ///< h_L / h when n_rings is not given
+
+    // [nondimensional]: given, fddem derives viscosity, gravity and body densities.
+    std::optional<double> reynolds;       ///< Re = ρf U_c D / μ
+    std::optional<double> density_ratio;  ///< ρr = ρs / ρf
+    double characteristic_velocity = 1.0; ///< U_c [m/s] (eq. 21 sets g so that U_c results)
+    double wall_factor = 0.0;             ///< K of eq. (20) used (derived; 0 if not derived)
+
     // [output]
-    std::string output_directory; ///< empty: runs/<case file stem>
-    double field_interval = 0.0;  ///< [s]; 0: fields at the end only
-    long log_interval = 100;      ///< steps between plain log lines (no terminal)
+    std::string output_directory;   ///< empty: runs/<case file stem>
+    double field_interval = 0.0;    ///< [s]; 0: fields at the end only
+    double particle_interval = 0.0; ///< [s]; 0: particles.csv every step
+    long log_interval = 100;        ///< steps between plain log lines (no terminal)
     std::vector<LineSample> lines;
 };
 

@@ -4,6 +4,8 @@
 #include "fddem/simulation/simulation.hpp"
 
 #include "fddem/core/errors.hpp"
+#include "fddem/coupling/rigid_coupling.hpp"
+#include "fddem/coupling/transfer.hpp"
 #include "fddem/fluid/pressure_correction.hpp"
 #include "fddem/grid/loops.hpp"
 
@@ -82,7 +84,8 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
                                                        : ConvectionScheme::central,
                          config.velocity_relaxation, config.momentum_sweeps},
       state_(grid_), previous_level_(grid_),
-      length_scale_(*std::min_element(config.size.begin(), config.size.end()))
+      length_scale_(*std::min_element(config.size.begin(), config.size.end())),
+      kernel_(kernel_from_name(config.kernel))
 {
     for (int a = 0; a < Dim; ++a) {
         systems_.emplace_back(grid_);
@@ -96,6 +99,38 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
     for (int a = 0; a < Dim && static_cast<std::size_t>(a) < config.body_force.size(); ++a) {
         force[a] = config.body_force[static_cast<std::size_t>(a)];
     }
+    for (int a = 0; a < Dim && static_cast<std::size_t>(a) < config.gravity.size(); ++a) {
+        gravity_[a] = config.gravity[static_cast<std::size_t>(a)];
+    }
+    for (std::size_t k = 0; k < config.bodies.size(); ++k) {
+        const BodyConfig& b = config.bodies[k];
+        RigidBody<Dim> body;
+        body.id = static_cast<int>(k);
+        body.shape = Ball<Dim>{b.diameter};
+        body.density = b.density;
+        body.motion = b.motion == "fixed"        ? Motion::fixed
+                      : b.motion == "prescribed" ? Motion::prescribed
+                                                 : Motion::free;
+        for (int d = 0; d < Dim; ++d) {
+            body.centre[d] = b.position[static_cast<std::size_t>(d)];
+            body.velocity[d] = body.motion == Motion::fixed || b.velocity.empty()
+                                   ? 0.0
+                                   : b.velocity[static_cast<std::size_t>(d)];
+        }
+        if constexpr (Dim == 2) {
+            body.omega = body.motion == Motion::fixed ? 0.0 : b.omega;
+        } else {
+            body.omega = Vec<3>::Zero();
+            body.torque = Vec<3>::Zero();
+        }
+        const int n_rings = b.n_rings > 0
+                                ? b.n_rings
+                                : rings_for_spacing(body.shape.radius(), grid_.spacing().maxCoeff(),
+                                                    config.marker_spacing_ratio);
+        bodies_.push_back(body);
+        couplings_.emplace_back(make_ball_markers(body.shape, n_rings));
+    }
+    place_markers();
     set_uniform_body_force(force);
     fill_velocity_ghosts(grid_, bc_, state_.u);
     fill_cell_ghosts(grid_, bc_, state_.p);
@@ -120,8 +155,129 @@ template <int Dim>
 void Simulation<Dim>::set_uniform_body_force(const Vec<Dim>& force)
 {
     is_reusable_assembly_ = false;
+    uniform_force_ = force;
+    spread_marker_forces();
+}
+
+template <int Dim>
+void Simulation<Dim>::place_markers()
+{
+    std::visit(
+        [&](auto kernel) {
+            using Kernel = decltype(kernel);
+            for (std::size_t b = 0; b < bodies_.size(); ++b) {
+                const RigidBody<Dim>& body = bodies_[b];
+                BodyCoupling<Dim>& c = couplings_[b];
+                for (std::size_t l = 0; l < c.markers.size(); ++l) {
+                    const Vec<Dim>& r = c.markers.offsets[l];
+                    if constexpr (Dim == 2) {
+                        const double cs = std::cos(body.angle);
+                        const double sn = std::sin(body.angle);
+                        c.offsets[l] = Vec<2>(cs * r.x() - sn * r.y(), sn * r.x() + cs * r.y());
+                    } else {
+                        c.offsets[l] = r; // a sphere's markers need not turn with it
+                    }
+                    c.positions[l] = body.centre + c.offsets[l];
+                    if (!fits_in_storage<Dim, Kernel>(grid_, c.positions[l])) {
+                        throw NumericalError(clock_.step, clock_.time, "body " + std::to_string(b),
+                                             "a marker of the body left the box (its kernel "
+                                             "support reaches past the ghost layers)");
+                    }
+                }
+            }
+        },
+        kernel_);
+}
+
+template <int Dim>
+void Simulation<Dim>::spread_marker_forces()
+{
+    // f = uniform force + ρf D(λ): the pseudo body force of eq. (4a) on the faces.
     for (int a = 0; a < Dim; ++a) {
-        state_.body_force[a].fill(force[a]);
+        state_.body_force[a].fill(uniform_force_[a]);
+    }
+    std::visit(
+        [&](auto kernel) {
+            using Kernel = decltype(kernel);
+            for (const BodyCoupling<Dim>& c : couplings_) {
+                for (std::size_t l = 0; l < c.markers.size(); ++l) {
+                    spread_vector<Dim, Kernel>(grid_, state_.body_force, c.positions[l],
+                                               properties_.density * c.lambda[l],
+                                               c.markers.volumes[l]);
+                }
+            }
+        },
+        kernel_);
+}
+
+template <int Dim>
+double Simulation<Dim>::update_bodies(double dt)
+{
+    double defect = 0.0;
+    std::visit(
+        [&](auto kernel) {
+            using Kernel = decltype(kernel);
+            for (std::size_t b = 0; b < bodies_.size(); ++b) {
+                RigidBody<Dim>& body = bodies_[b];
+                BodyCoupling<Dim>& c = couplings_[b];
+                for (std::size_t l = 0; l < c.markers.size(); ++l) {
+                    c.fluid[l] = interpolate_velocity<Dim, Kernel>(grid_, state_.u, c.positions[l]);
+                }
+                RigidVelocity<Dim> motion{body.velocity, body.omega};
+                if (body.motion == Motion::free) {
+                    const RigidUpdateInput<Dim> in{
+                        c.velocity_n,          c.omega_n,      body.density,
+                        body.volume(),         body.inertia(), properties_.density,
+                        c.fluid_second_moment, gravity_,       dt};
+                    motion = rigid_velocity<Dim>(in, c.offsets, c.markers.volumes, c.fluid,
+                                                 c.lambda_star); // eqs. (13)–(14)
+                }
+                defect = std::max(defect, update_marker_force<Dim>(motion, c.offsets, c.fluid,
+                                                                   c.lambda_star, dt,
+                                                                   c.lambda)); // eq. (15)
+                for (std::size_t l = 0; l < c.markers.size(); ++l) {
+                    // eq. (16): u ← u + Δt D(λ − λ*)
+                    spread_vector<Dim, Kernel>(grid_, state_.u, c.positions[l],
+                                               dt * (c.lambda[l] - c.lambda_star[l]),
+                                               c.markers.volumes[l]);
+                }
+                c.lambda_star = c.lambda; // λ* ← λ
+                body.velocity = motion.velocity;
+                body.omega = motion.omega;
+            }
+        },
+        kernel_);
+    return defect;
+}
+
+template <int Dim>
+void Simulation<Dim>::move_bodies(double dt)
+{
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        RigidBody<Dim>& body = bodies_[b];
+        const BodyCoupling<Dim>& c = couplings_[b];
+        // Hydrodynamic force and torque from the fluid's momentum balance over the body:
+        // F_H = ρf V (U^{n+1} − U^n)/Δt − ρf Σ ΔV_l λ_l (and likewise with r ×).
+        Vec<Dim> lambda_sum = Vec<Dim>::Zero();
+        AngularVec<Dim> lambda_moment{};
+        if constexpr (Dim == 3) {
+            lambda_moment = Vec<3>::Zero();
+        }
+        for (std::size_t l = 0; l < c.markers.size(); ++l) {
+            lambda_sum += c.markers.volumes[l] * c.lambda[l];
+            lambda_moment += c.markers.volumes[l] * cross(c.offsets[l], c.lambda[l]);
+        }
+        const double rho = properties_.density;
+        body.force = rho * body.volume() * (body.velocity - c.velocity_n) / dt - rho * lambda_sum;
+        body.torque =
+            rho * c.fluid_second_moment * (body.omega - c.omega_n) / dt - rho * lambda_moment;
+        if (body.motion == Motion::fixed) {
+            continue;
+        }
+        body.centre += 0.5 * dt * (body.velocity + c.velocity_n); // eq. (17)
+        if constexpr (Dim == 2) {
+            body.angle += 0.5 * dt * (body.omega + c.omega_n);
+        }
     }
 }
 
@@ -146,6 +302,12 @@ StepReport Simulation<Dim>::advance()
         previous_level_[a] = state_.u_n[a];
         state_.u_n[a] = state_.u[a]; // keep u^n
     }
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        couplings_[b].velocity_n = bodies_[b].velocity; // keep U^n, ω^n; λ* = λ^n already
+        couplings_[b].omega_n = bodies_[b].omega;
+    }
+    const bool has_bodies = !bodies_.empty();
+    double rigid_defect = 0.0;
     const double cell = grid_.spacing().minCoeff();
 
     StepReport report;
@@ -177,9 +339,9 @@ StepReport Simulation<Dim>::advance()
                                  "the momentum residual is not finite: the flow has blown up");
         }
         if (k > 1 && report.momentum_residual < config_.tolerance &&
-            mass_residual < config_.tolerance) {
+            mass_residual < config_.tolerance && rigid_defect < config_.tolerance) {
             report.is_converged = true;
-            is_reusable_assembly_ = true;
+            is_reusable_assembly_ = !has_bodies;
             momentum_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
             break;
         }
@@ -195,6 +357,16 @@ StepReport Simulation<Dim>::advance()
             grid_, bc_, properties_, dt, config_.pressure_relaxation, *poisson_, state_);
         pressure_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
         mass_residual = max_divergence * cell / velocity_scale;
+
+        // eqs. (13)–(16): rigid-body velocities, marker forces, the correction spread to u.
+        if (has_bodies) {
+            start = std::chrono::steady_clock::now();
+            rigid_defect = update_bodies(dt) / std::max(velocity_scale, reference_velocity());
+            spread_marker_forces(); // the momentum source of the next iteration: ρf D(λ*)
+            fill_velocity_ghosts(grid_, bc_, state_.u);
+            coupling_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
+            report.rigid_defect = rigid_defect;
+        }
         report.outer_iterations = k;
     }
 
@@ -212,6 +384,11 @@ StepReport Simulation<Dim>::advance()
                           }));
     }
     report.courant = courant;
+    if (has_bodies) {
+        move_bodies(dt); // eq. (17)
+        place_markers();
+        spread_marker_forces();
+    }
     report.rate_of_change = change / dt * length_scale_ / (velocity_scale * velocity_scale);
     clock_.time += dt;
     ++clock_.step;

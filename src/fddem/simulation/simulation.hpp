@@ -2,7 +2,10 @@
 #pragma once
 /// Simulation<Dim> owns everything of one run and advances it one time step at a time.
 
+#include "fddem/bodies/rigid_body.hpp"
 #include "fddem/core/logger.hpp"
+#include "fddem/coupling/body_coupling.hpp"
+#include "fddem/coupling/delta_kernel.hpp"
 #include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/fluid/fluid_state.hpp"
 #include "fddem/fluid/momentum.hpp"
@@ -23,6 +26,7 @@ struct StepReport {
     double momentum_residual = 0.0; ///< max |r/a_P| / U_ref of the accepted iterate
     double courant = 0.0;           ///< max_d max |u_d| Δt / h_d after the step
     double rate_of_change = 0.0;    ///< max |u^{n+1} − u^n| / Δt · L / U_ref² (steady check)
+    double rigid_defect = 0.0; ///< max |U + ω×r − I(u)| / U_ref over markers, last iteration
 };
 
 /// Time and step counters.
@@ -61,6 +65,14 @@ public:
     void invalidate_assembly() noexcept { is_reusable_assembly_ = false; }
     [[nodiscard]] const FluidProperties& fluid_properties() const noexcept { return properties_; }
     [[nodiscard]] const Clock& clock() const noexcept { return clock_; }
+    [[nodiscard]] const std::vector<RigidBody<Dim>>& bodies() const noexcept { return bodies_; }
+    [[nodiscard]] std::vector<RigidBody<Dim>>& bodies() noexcept { return bodies_; }
+    [[nodiscard]] const std::vector<BodyCoupling<Dim>>& couplings() const noexcept
+    {
+        return couplings_;
+    }
+    /// Seconds spent so far in the fictitious-domain coupling (eqs. (13)–(16)).
+    [[nodiscard]] double coupling_seconds() const noexcept { return coupling_seconds_; }
     [[nodiscard]] const CaseConfig& config() const noexcept { return config_; }
     [[nodiscard]] const PoissonSolver<Dim>& pressure_solver() const noexcept { return *poisson_; }
     /// Seconds spent so far in the momentum and pressure stages.
@@ -72,6 +84,10 @@ public:
 
 private:
     [[nodiscard]] double reference_velocity() const;
+    void place_markers();
+    double update_bodies(double dt);
+    void spread_marker_forces();
+    void move_bodies(double dt);
     void advance_time_level_in_systems();
 
     CaseConfig config_;
@@ -88,6 +104,12 @@ private:
     std::unique_ptr<PoissonSolver<Dim>> poisson_;
     Clock clock_;
     double length_scale_; ///< smallest box side [m], for the steady-state measure
+    std::vector<RigidBody<Dim>> bodies_;
+    std::vector<BodyCoupling<Dim>> couplings_;
+    AnyKernel kernel_;
+    Vec<Dim> gravity_ = Vec<Dim>::Zero();
+    Vec<Dim> uniform_force_ = Vec<Dim>::Zero();
+    double coupling_seconds_ = 0.0;
     double momentum_seconds_ = 0.0;
     double pressure_seconds_ = 0.0;
 };

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Discrete delta functions for the transfer between the grid and the markers (paper §2.2).
+/// The multi-dimensional weight is the product of 1-D weights φ(r/h) per axis.
+
+#include <cmath>
+#include <concepts>
+#include <string>
+#include <variant>
+
+namespace fddem {
+
+template <class K>
+concept DeltaKernel = requires(double s)
+{
+    {
+        K::half_width
+        } -> std::convertible_to<int>; // support: |s| < half_width
+    {
+        K::weight(s)
+        } -> std::same_as<double>; // 1-D weight, s = r / h
+};
+
+/// Linear hat d_h(r) = 1 − |r|/h for |r| < h, else 0 (paper §2.2).
+struct HatKernel {
+    static constexpr int half_width = 1;
+    [[nodiscard]] static double weight(double s) noexcept
+    {
+        const double a = std::abs(s);
+        return a < 1.0 ? 1.0 - a : 0.0;
+    }
+};
+
+/// Roma, Peskin & Berger (1999), J. Comput. Phys. 153, eq. (12): three-point kernel.
+struct RomaPeskin3Kernel {
+    static constexpr int half_width = 2; // support |s| < 1.5
+    [[nodiscard]] static double weight(double s) noexcept
+    {
+        const double a = std::abs(s);
+        if (a <= 0.5) {
+            return (1.0 + std::sqrt(1.0 - 3.0 * a * a)) / 3.0;
+        }
+        if (a <= 1.5) {
+            const double b = 1.0 - a;
+            return (5.0 - 3.0 * a - std::sqrt(1.0 - 3.0 * b * b)) / 6.0;
+        }
+        return 0.0;
+    }
+};
+
+/// Peskin (2002), Acta Numerica 11, eq. (6.27): the standard four-point kernel.
+struct Peskin4Kernel {
+    static constexpr int half_width = 2;
+    [[nodiscard]] static double weight(double s) noexcept
+    {
+        const double a = std::abs(s);
+        if (a <= 1.0) {
+            return (3.0 - 2.0 * a + std::sqrt(1.0 + 4.0 * a - 4.0 * a * a)) / 8.0;
+        }
+        if (a <= 2.0) {
+            return (5.0 - 2.0 * a - std::sqrt(-7.0 + 12.0 * a - 4.0 * a * a)) / 8.0;
+        }
+        return 0.0;
+    }
+};
+
+static_assert(DeltaKernel<HatKernel> && DeltaKernel<RomaPeskin3Kernel> &&
+              DeltaKernel<Peskin4Kernel>);
+
+/// Chosen at run time (case key coupling.kernel), dispatched once per body loop.
+using AnyKernel = std::variant<HatKernel, RomaPeskin3Kernel, Peskin4Kernel>;
+
+/// "hat", "roma3", "peskin4" → kernel; throws InputError otherwise.
+[[nodiscard]] AnyKernel kernel_from_name(const std::string& name);
+
+} // namespace fddem

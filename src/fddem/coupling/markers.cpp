@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/coupling/markers.hpp"
+
+#include "fddem/core/errors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace fddem {
+
+template <int Dim>
+double MarkerSet<Dim>::second_moment() const
+{
+    double sum = 0.0;
+    for (std::size_t l = 0; l < offsets.size(); ++l) {
+        sum += volumes[l] * offsets[l].squaredNorm();
+    }
+    if constexpr (Dim == 3) {
+        sum *= 2.0 / 3.0; // about one axis: ∫ |r⊥|² = ⅔ ∫ |r|² for an isotropic set
+    }
+    return sum;
+}
+
+template <int Dim>
+MarkerSet<Dim> make_ball_markers(const Ball<Dim>& ball, int n_rings)
+{
+    if (n_rings < 1) {
+        throw InternalError("make_ball_markers: at least one ring");
+    }
+    constexpr double pi = std::numbers::pi;
+    MarkerSet<Dim> set;
+    const double h = ball.radius() / (n_rings + 0.5);
+    set.spacing = h;
+    set.offsets.push_back(Vec<Dim>::Zero());
+    if constexpr (Dim == 2) {
+        set.volumes.push_back(pi * 0.25 * h * h);
+        for (int i = 1; i <= n_rings; ++i) {
+            const int count = 6 * i;
+            const double annulus = pi * h * h * ((i + 0.5) * (i + 0.5) - (i - 0.5) * (i - 0.5));
+            for (int k = 0; k < count; ++k) {
+                const double phi = 2.0 * pi * k / count;
+                set.offsets.push_back(Vec<2>(i * h * std::cos(phi), i * h * std::sin(phi)));
+                set.volumes.push_back(annulus / count);
+            }
+        }
+    } else {
+        set.volumes.push_back(4.0 / 3.0 * pi * std::pow(0.5 * h, 3));
+        const double golden = pi * (3.0 - std::sqrt(5.0));
+        for (int i = 1; i <= n_rings; ++i) {
+            const int count = std::max(1, static_cast<int>(std::lround(4.0 * pi * i * i)));
+            const double shell =
+                4.0 / 3.0 * pi * h * h * h * (std::pow(i + 0.5, 3) - std::pow(i - 0.5, 3));
+            for (int k = 0; k < count; ++k) {
+                const double z = 1.0 - (2.0 * k + 1.0) / count;
+                const double r = std::sqrt(1.0 - z * z);
+                const double phi = golden * k;
+                set.offsets.push_back(i * h * Vec<3>(r * std::cos(phi), r * std::sin(phi), z));
+                set.volumes.push_back(shell / count);
+            }
+        }
+    }
+    return set;
+}
+
+int rings_for_spacing(double radius, double grid_spacing, double ratio)
+{
+    return std::max(1, static_cast<int>(std::lround(radius / (ratio * grid_spacing) - 0.5)));
+}
+
+template struct MarkerSet<2>;
+template struct MarkerSet<3>;
+template MarkerSet<2> make_ball_markers<2>(const Ball<2>&, int);
+template MarkerSet<3> make_ball_markers<3>(const Ball<3>&, int);
+
+} // namespace fddem

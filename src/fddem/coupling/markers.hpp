@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Lagrangian markers filling a body (paper §3.1, Fig. 1): one at the centre and 6i on ring i,
+/// i = 1..N_a, for a disk; the same idea with spherical shells for a sphere.
+///
+/// Layout (a choice, the paper gives only the counts): ring i has radius i h_L with
+/// h_L = R / (N_a + ½), so the rings sit at the middles of N_a annuli of equal width h_L
+/// between h_L/2 and R. Each ring's markers share its annulus equally, and the centre marker
+/// owns the disk of radius h_L/2: then Σ ΔV_l = π R² exactly, every ring marker has the same
+/// volume π h_L²/3, and neighbours on a ring are π h_L/3 ≈ 1.05 h_L apart. A sphere's shells
+/// hold round(4π i²) markers on a golden-angle spiral (spacing ≈ h_L), sharing the shell's
+/// volume equally.
+
+#include "fddem/bodies/ball.hpp"
+
+#include <vector>
+
+namespace fddem {
+
+template <int Dim>
+struct MarkerSet {
+    std::vector<Vec<Dim>> offsets; ///< from the body centre, body frame [m]
+    std::vector<double> volumes;   ///< ΔV_l [m³] (2D: m²), Σ = body volume
+    double spacing = 0.0;          ///< h_L [m]
+
+    [[nodiscard]] std::size_t size() const noexcept { return offsets.size(); }
+    /// Σ ΔV_l |r_l|²: the markers' second moment, the fluid inertia they represent / ρf.
+    [[nodiscard]] double second_moment() const;
+};
+
+/// Markers for a ball with `n_rings` rings (2D) or shells (3D); n_rings ≥ 1.
+template <int Dim>
+[[nodiscard]] MarkerSet<Dim> make_ball_markers(const Ball<Dim>& ball, int n_rings);
+
+/// N_a for a target marker spacing h_L ≈ ratio · h: round(R / (ratio h) − ½), at least 1.
+[[nodiscard]] int rings_for_spacing(double radius, double grid_spacing, double ratio);
+
+} // namespace fddem

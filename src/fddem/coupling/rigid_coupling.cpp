@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/coupling/rigid_coupling.hpp"
+
+#include <algorithm>
+
+namespace fddem {
+
+template <int Dim>
+RigidVelocity<Dim>
+rigid_velocity(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offsets,
+               std::span<const double> volumes, std::span<const Vec<Dim>> fluid_at_markers,
+               std::span<const Vec<Dim>> lambda_star)
+{
+    Vec<Dim> momentum = Vec<Dim>::Zero();
+    AngularVec<Dim> angular{};
+    if constexpr (Dim == 3) {
+        angular = Vec<3>::Zero();
+    }
+    for (std::size_t l = 0; l < offsets.size(); ++l) {
+        const Vec<Dim> source = fluid_at_markers[l] / in.dt - lambda_star[l];
+        momentum += volumes[l] * source;
+        angular += volumes[l] * cross(offsets[l], source);
+    }
+    const double dt = in.dt;
+    const double buoyant_mass = (in.body_density - in.fluid_density) * in.volume;
+    const Vec<Dim> velocity =
+        (buoyant_mass * (in.velocity_n / dt + in.gravity) + in.fluid_density * momentum) /
+        (in.body_density * in.volume / dt);
+    const double fluid_inertia = in.fluid_density * in.fluid_second_moment;
+    const AngularVec<Dim> omega =
+        ((in.body_inertia - fluid_inertia) * in.omega_n / dt + in.fluid_density * angular) /
+        (in.body_inertia / dt);
+    return {velocity, omega};
+}
+
+template <int Dim>
+double update_marker_force(const RigidVelocity<Dim>& motion, std::span<const Vec<Dim>> offsets,
+                           std::span<const Vec<Dim>> fluid_at_markers,
+                           std::span<const Vec<Dim>> lambda_star, double dt,
+                           std::span<Vec<Dim>> lambda)
+{
+    double defect = 0.0;
+    for (std::size_t l = 0; l < offsets.size(); ++l) {
+        const Vec<Dim> rigid = motion.velocity + cross(motion.omega, offsets[l]);
+        const Vec<Dim> slip = rigid - fluid_at_markers[l];
+        lambda[l] = lambda_star[l] + slip / dt;
+        defect = std::max(defect, slip.norm());
+    }
+    return defect;
+}
+
+template RigidVelocity<2> rigid_velocity<2>(const RigidUpdateInput<2>&, std::span<const Vec<2>>,
+                                            std::span<const double>, std::span<const Vec<2>>,
+                                            std::span<const Vec<2>>);
+template RigidVelocity<3> rigid_velocity<3>(const RigidUpdateInput<3>&, std::span<const Vec<3>>,
+                                            std::span<const double>, std::span<const Vec<3>>,
+                                            std::span<const Vec<3>>);
+template double update_marker_force<2>(const RigidVelocity<2>&, std::span<const Vec<2>>,
+                                       std::span<const Vec<2>>, std::span<const Vec<2>>, double,
+                                       std::span<Vec<2>>);
+template double update_marker_force<3>(const RigidVelocity<3>&, std::span<const Vec<3>>,
+                                       std::span<const Vec<3>>, std::span<const Vec<3>>, double,
+                                       std::span<Vec<3>>);
+
+} // namespace fddem

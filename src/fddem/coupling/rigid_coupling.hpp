@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The fictitious-domain update of one body inside a SIMPLE outer iteration, eqs. (13)–(15),
+/// in dimensional form (docs/method.md §2). λ is the pseudo body force per unit mass of fluid
+/// on the markers (ρf λ is the force per volume added to the fluid's momentum equation).
+///
+/// eq. (13): ρs V U^{n+1}/Δt = (ρs − ρf) V (U^n/Δt + g) + ρf Σ_l ΔV_l (u_l/Δt − λ*_l)
+/// eq. (14): J_s ω^{n+1}/Δt = (J_s − J_f) ω^n/Δt + ρf Σ_l ΔV_l r_l × (u_l/Δt − λ*_l)
+///           (a ball's inertia is isotropic, so the gyroscopic ω × Jω of 3D vanishes)
+/// eq. (15): λ_l = λ*_l + (U^{n+1} + ω^{n+1} × r_l − u_l)/Δt
+/// with u_l = I(u) at marker l, r_l its offset from the centre, J_s = ρs ∫|r⊥|², and
+/// J_f = ρf Σ_l ΔV_l |r_l⊥|² the fluid inertia *as the markers represent it*, so that at
+/// convergence (u_l rigid) eq. (14) is exactly the discrete form of the paper's eq. (5b).
+/// Dividing the particle's equation of motion ρs V dU/dt = F_H + (ρs − ρf) V g by it gives the
+/// hydrodynamic force for output: F_H = ρs V (U^{n+1} − U^n)/Δt − (ρs − ρf) V g.
+
+#include "fddem/bodies/rigid_body.hpp"
+
+#include <span>
+
+namespace fddem {
+
+template <int Dim>
+struct RigidVelocity {
+    Vec<Dim> velocity;
+    AngularVec<Dim> omega;
+};
+
+/// The body's level-n motion and the parameters eqs. (13)–(14) need.
+template <int Dim>
+struct RigidUpdateInput {
+    Vec<Dim> velocity_n;        ///< U^n [m/s]
+    AngularVec<Dim> omega_n;    ///< ω^n [rad/s]
+    double body_density;        ///< ρs [kg/m³]
+    double volume;              ///< V [m³] (2D: m²)
+    double body_inertia;        ///< J_s [kg·m²]
+    double fluid_density;       ///< ρf [kg/m³]
+    double fluid_second_moment; ///< Σ ΔV_l |r_l⊥|² [m⁵] (2D: m⁴)
+    Vec<Dim> gravity;           ///< g [m/s²]
+    double dt;                  ///< Δt [s]
+};
+
+/// eqs. (13)–(14): U^{n+1}, ω^{n+1} of a free body.
+template <int Dim>
+[[nodiscard]] RigidVelocity<Dim>
+rigid_velocity(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offsets,
+               std::span<const double> volumes, std::span<const Vec<Dim>> fluid_at_markers,
+               std::span<const Vec<Dim>> lambda_star);
+
+/// eq. (15): λ on every marker; returns the rigid-motion defect max_l |U + ω×r_l − u_l| [m/s].
+template <int Dim>
+double update_marker_force(const RigidVelocity<Dim>& motion, std::span<const Vec<Dim>> offsets,
+                           std::span<const Vec<Dim>> fluid_at_markers,
+                           std::span<const Vec<Dim>> lambda_star, double dt,
+                           std::span<Vec<Dim>> lambda);
+
+} // namespace fddem

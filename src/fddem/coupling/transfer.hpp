@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The transfer operators of paper §2.2, per velocity component at that component's own face
+/// positions (face (axis, i) at x_{i−1/2} along axis, cell centres across):
+///   I: f_L(X_l) = Σ_faces f_E(x) δ_h(x − X_l),
+///   D: f_E(x) += Σ_l f_L(X_l) δ_h(x − X_l) ΔV_l / ΔV_cell   (ΔV_l* of the paper),
+/// with δ_h the product of 1-D kernel weights. D is the adjoint of I under the ΔV weighting.
+/// Points must keep the kernel support inside the storage box (ghosts included): the caller
+/// checks it with `fits_in_storage`. Spreading is serial: markers of one body may share faces.
+
+#include "fddem/coupling/delta_kernel.hpp"
+#include "fddem/grid/fields.hpp"
+
+namespace fddem {
+
+/// True if the support of Kernel around x fits in the grid's storage for every component.
+template <int Dim, DeltaKernel Kernel>
+[[nodiscard]] bool fits_in_storage(const MacGrid<Dim>& grid, const Vec<Dim>& x);
+
+/// I for one component: the field `a` (component `axis`) at point x.
+template <int Dim, DeltaKernel Kernel>
+[[nodiscard]] double interpolate_component(const MacGrid<Dim>& grid, const GridArray<Dim>& a,
+                                           int axis, const Vec<Dim>& x);
+
+/// D for one component: adds value · δ_h(x_face − x) · h^Dim-normalised weight to `a`, i.e.
+/// a_face += value · w_face; the caller passes value = f_l ΔV_l / ΔV_cell.
+template <int Dim, DeltaKernel Kernel>
+void spread_component(const MacGrid<Dim>& grid, GridArray<Dim>& a, int axis, const Vec<Dim>& x,
+                      double value);
+
+/// I for the whole velocity.
+template <int Dim, DeltaKernel Kernel>
+[[nodiscard]] Vec<Dim> interpolate_velocity(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
+                                            const Vec<Dim>& x)
+{
+    Vec<Dim> result;
+    for (int a = 0; a < Dim; ++a) {
+        result[a] = interpolate_component<Dim, Kernel>(grid, u[a], a, x);
+    }
+    return result;
+}
+
+/// D for a vector quantity f at x with marker volume ΔV_l: u += f ΔV_l / ΔV_cell δ-weighted.
+template <int Dim, DeltaKernel Kernel>
+void spread_vector(const MacGrid<Dim>& grid, FaceField<Dim>& u, const Vec<Dim>& x,
+                   const Vec<Dim>& f, double marker_volume)
+{
+    const double scale = marker_volume / grid.cell_volume();
+    for (int a = 0; a < Dim; ++a) {
+        spread_component<Dim, Kernel>(grid, u[a], a, x, f[a] * scale);
+    }
+}
+
+} // namespace fddem
