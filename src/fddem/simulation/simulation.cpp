@@ -308,6 +308,7 @@ StepReport Simulation<Dim>::advance()
     }
     const bool has_bodies = !bodies_.empty();
     double rigid_defect = 0.0;
+    double body_change = 0.0;
     const double cell = grid_.spacing().minCoeff();
 
     StepReport report;
@@ -338,8 +339,18 @@ StepReport Simulation<Dim>::advance()
             throw NumericalError(clock_.step + 1, clock_.time + dt, "momentum equations",
                                  "the momentum residual is not finite: the flow has blown up");
         }
-        if (k > 1 && report.momentum_residual < config_.tolerance &&
-            mass_residual < config_.tolerance && rigid_defect < config_.tolerance) {
+        // Paper deviation (the paper does not state its test): with bodies, a step has
+        // converged when the body velocities change by less than tolerance · U_ref from one
+        // outer iteration to the next. The marker defect and the fluid residuals are reported,
+        // not required: asking I(u) to be rigid at every marker of a discretely divergence-free
+        // u asks slightly more than the grid can give, and λ then creeps on without the fluid
+        // converging further (Fig. 3 case: mass residual 0.05, 0.03, 0.01 after 50, 200, 800
+        // iterations of one step).
+        const bool is_fluid_converged =
+            report.momentum_residual < config_.tolerance && mass_residual < config_.tolerance;
+        const bool is_step_converged =
+            has_bodies ? body_change < config_.tolerance : is_fluid_converged;
+        if (k > 1 && is_step_converged) {
             report.is_converged = true;
             is_reusable_assembly_ = !has_bodies;
             momentum_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
@@ -361,7 +372,28 @@ StepReport Simulation<Dim>::advance()
         // eqs. (13)–(16): rigid-body velocities, marker forces, the correction spread to u.
         if (has_bodies) {
             start = std::chrono::steady_clock::now();
-            rigid_defect = update_bodies(dt) / std::max(velocity_scale, reference_velocity());
+            std::vector<Vec<Dim>> previous_velocity;
+            std::vector<AngularVec<Dim>> previous_omega;
+            for (const RigidBody<Dim>& body : bodies_) {
+                previous_velocity.push_back(body.velocity);
+                previous_omega.push_back(body.omega);
+            }
+            const double scale = std::max(velocity_scale, reference_velocity());
+            rigid_defect = update_bodies(dt) / scale;
+            body_change = 0.0;
+            for (std::size_t b = 0; b < bodies_.size(); ++b) {
+                double spin = 0.0;
+                if constexpr (Dim == 2) {
+                    spin = std::abs(bodies_[b].omega - previous_omega[b]);
+                } else {
+                    spin = (bodies_[b].omega - previous_omega[b]).norm();
+                }
+                body_change =
+                    std::max(body_change, ((bodies_[b].velocity - previous_velocity[b]).norm() +
+                                           spin * bodies_[b].shape.radius()) /
+                                              scale);
+            }
+            report.body_change = body_change;
             spread_marker_forces(); // the momentum source of the next iteration: ρf D(λ*)
             fill_velocity_ghosts(grid_, bc_, state_.u);
             coupling_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
@@ -389,7 +421,9 @@ StepReport Simulation<Dim>::advance()
         place_markers();
         spread_marker_forces();
     }
-    report.rate_of_change = change / dt * length_scale_ / (velocity_scale * velocity_scale);
+    // Divided in two steps: U_ref² may underflow for a fluid at rest.
+    report.rate_of_change =
+        change == 0.0 ? 0.0 : (change / velocity_scale) * (length_scale_ / (dt * velocity_scale));
     clock_.time += dt;
     ++clock_.step;
     return report;

@@ -27,6 +27,7 @@ struct StepReport {
     double courant = 0.0;           ///< max_d max |u_d| Δt / h_d after the step
     double rate_of_change = 0.0;    ///< max |u^{n+1} − u^n| / Δt · L / U_ref² (steady check)
     double rigid_defect = 0.0; ///< max |U + ω×r − I(u)| / U_ref over markers, last iteration
+    double body_change = 0.0;  ///< max (|ΔU| + R|Δω|) / U_ref over bodies, last iteration
 };
 
 /// Time and step counters.

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// The fictitious-domain coupling (eqs. (13)–(17)) on the paper's Fig. 3 case and on bodies
+// whose motion is known without any fluid computation.
+
+#include "fddem/io/case_reader.hpp"
+#include "fddem/simulation/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "support/run_to_end.hpp"
+
+namespace fddem {
+namespace {
+
+const std::string fig03 =
+    std::string(FDDEM_SOURCE_DIR) + "/cases/paper/fig03_settling_channel/case.toml";
+
+TEST(SettlingDisk, TerminalVelocityInTheChannelIsTheAnalyticOne)
+{
+    // Paper Fig. 3 (Re = 0.1, W/D = 4, ρr = 1.2, h = D/16, N_a = 6, Δt = 5e-4), 0.25 time
+    // units: the disk reaches its terminal velocity within about 0.1 (the paper: < 200 steps).
+    const CaseConfig config = read_case(fig03, {"time.end=0.25"});
+    Simulation<2> sim(config);
+    test::run_to_end(sim);
+    const double v = -sim.bodies().front().velocity[1];
+    std::printf("terminal velocity / U_c = %.4f (analytic 1, Happel & Brenner 1965)\n", v);
+    // The wall-factor formula (eq. 20) is the Re → 0 limit; measured 1.03–1.04 at this
+    // resolution (the diffuse interface and the unconverged marker constraint, see the
+    // issue notes): 5 % bounds it and fails on any real regression of the coupling.
+    EXPECT_NEAR(v, 1.0, 0.05);
+    // It settles straight down the centre line.
+    EXPECT_NEAR(sim.bodies().front().centre[0], 2.0, 1e-4);
+}
+
+CaseConfig quiescent_box(double body_density)
+{
+    CaseConfig c = read_case_string(R"([domain]
+size = [2.0, 2.0]
+cells = [32, 32]
+[fluid]
+density = 1.0
+viscosity = 0.1
+gravity = [0.0, -10.0]
+[[bodies]]
+diameter = 0.5
+density = 1.0
+position = [1.0, 1.0]
+[time]
+dt = 0.005
+end = 0.1
+)",
+                                    "test");
+    c.bodies.front().density = body_density;
+    return c;
+}
+
+TEST(SettlingDisk, NeutrallyBuoyantDiskInStillFluidStaysAtRest)
+{
+    Simulation<2> sim(quiescent_box(1.0));
+    test::run_to_end(sim);
+    EXPECT_LT(sim.bodies().front().velocity.norm(), 1e-12);
+    EXPECT_LT(std::abs(sim.bodies().front().omega), 1e-12);
+    EXPECT_LT((sim.bodies().front().centre - Vec<2>(1.0, 1.0)).norm(), 1e-12);
+}
+
+TEST(SettlingDisk, LightDiskRisesAndHeavyDiskSinks)
+{
+    Simulation<2> light(quiescent_box(0.5));
+    test::run_to_end(light);
+    Simulation<2> heavy(quiescent_box(1.5));
+    test::run_to_end(heavy);
+    const double rise = light.bodies().front().velocity[1];
+    const double sink = heavy.bodies().front().velocity[1];
+    std::printf("light disk v = %.4f, heavy disk v = %.4f\n", rise, sink);
+    EXPECT_GT(rise, 0.0);
+    EXPECT_LT(sink, 0.0);
+    EXPECT_TRUE(std::isfinite(rise));
+    // Early on inertia dominates: |a| ≈ |ρs − ρf| g / (ρs + ρf C_a) with added mass C_a = 1
+    // for a disk, so the light disk accelerates faster than the heavy one of equal |Δρ|.
+    EXPECT_GT(std::abs(rise), std::abs(sink));
+}
+
+} // namespace
+} // namespace fddem
