@@ -61,7 +61,7 @@ public:
           progress_(stderr, !options.quiet && ::isatty(STDERR_FILENO) != 0,
                     options.quiet ? std::numeric_limits<long>::max() : config.log_interval,
                     config.end_time),
-          pvd_(directory_ / "fields.pvd")
+          pvd_(directory_ / "fields.pvd"), particles_pvd_(directory_ / "particles.pvd")
     {
     }
 
@@ -229,9 +229,39 @@ private:
 
     void write_fields()
     {
-        const std::string name = fmt::format("fields/fields_{:06d}.vtr", pvd_.entries().size());
+        const std::size_t frame = pvd_.entries().size();
+        const std::string name = fmt::format("fields/fields_{:06d}.vtr", frame);
         write_vtr(directory_ / name, sim_.grid(), sim_.fluid().u, sim_.fluid().p);
         pvd_.add(sim_.clock().time, name);
+        if (sim_.bodies().empty()) {
+            return;
+        }
+        std::vector<std::array<double, 3>> centres;
+        std::vector<double> radii;
+        std::vector<std::array<double, 3>> velocities;
+        std::vector<std::array<double, 3>> spins;
+        for (const RigidBody<Dim>& b : sim_.bodies()) {
+            std::array<double, 3> x{};
+            std::array<double, 3> v{};
+            std::array<double, 3> w{};
+            for (int d = 0; d < Dim; ++d) {
+                x[static_cast<std::size_t>(d)] = b.centre[d];
+                v[static_cast<std::size_t>(d)] = b.velocity[d];
+            }
+            if constexpr (Dim == 2) {
+                w[2] = b.omega;
+            } else {
+                w = {b.omega[0], b.omega[1], b.omega[2]};
+            }
+            centres.push_back(x);
+            radii.push_back(b.shape.radius());
+            velocities.push_back(v);
+            spins.push_back(w);
+        }
+        const std::string particles = fmt::format("particles/particles_{:06d}.vtp", frame);
+        std::filesystem::create_directories(directory_ / "particles");
+        write_vtp(directory_ / particles, centres, radii, velocities, spins);
+        particles_pvd_.add(sim_.clock().time, particles);
     }
 
     void write_samples()
@@ -302,6 +332,7 @@ private:
     fs::path directory_;
     Progress progress_;
     PvdCollection pvd_;
+    PvdCollection particles_pvd_;
     std::unique_ptr<CsvHistory> particles_;
     long total_outer_ = 0;
     long n_unconverged_ = 0;

@@ -132,13 +132,33 @@ def openfoam_table(fddem_dir, fddem_wall, peer_results, n, reference_dir):
     print(" compare the centreline extrema with high-resolution values, Marchi et al. 2009.)")
 
 
+def ghia_table(run_dir, reference_dir):
+    """Centreline deviations of one cavity run from Ghia et al. and, for Re 100, the extrema."""
+    ghia_u = read_xy(os.path.join(reference_dir, "ghia1982_u_vertical_centerline.csv"))
+    ghia_v = read_xy(os.path.join(reference_dir, "ghia1982_v_horizontal_centerline.csv"))
+    with open(os.path.join(run_dir, "samples", "vertical_centerline.csv"), newline="") as f:
+        vertical = list(csv.DictReader(f))
+    with open(os.path.join(run_dir, "samples", "horizontal_centerline.csv"), newline="") as f:
+        horizontal = list(csv.DictReader(f))
+    y = [float(r["y"]) for r in vertical]
+    u = [float(r["u"]) for r in vertical]
+    x = [float(r["x"]) for r in horizontal]
+    v = [float(r["v"]) for r in horizontal]
+    print(f"{run_dir}: max|u - Ghia| = {max_deviation(y, u, ghia_u):.5f}, "
+          f"max|v - Ghia| = {max_deviation(x, v, ghia_v):.5f}")
+    print(f"  extrema: u_min {extremum(y, u, -1):.6f}, v_max {extremum(x, v, 1):.6f}, "
+          f"v_min {extremum(x, v, -1):.6f}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("mode", choices=["cavity", "openfoam"])
+    parser.add_argument("mode", choices=["cavity", "openfoam", "ghia"])
     parser.add_argument("args", nargs="+")
     options = parser.parse_args()
     if options.mode == "cavity":
         cavity_table(options.args)
+    elif options.mode == "ghia":
+        ghia_table(*options.args)
     else:
         openfoam_table(*options.args)
     return 0

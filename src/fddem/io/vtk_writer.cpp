@@ -20,10 +20,11 @@ struct Appended {
     std::uint64_t offset = 0;
 
     /// Adds one array (with its UInt64 byte count) and returns its offset.
-    std::uint64_t add(const std::vector<double>& values)
+    template <class T>
+    std::uint64_t add(const std::vector<T>& values)
     {
         const std::uint64_t at = bytes.size();
-        const std::uint64_t n_bytes = values.size() * sizeof(double);
+        const std::uint64_t n_bytes = values.size() * sizeof(T);
         bytes.append(reinterpret_cast<const char*>(&n_bytes), sizeof(n_bytes));
         bytes.append(reinterpret_cast<const char*>(values.data()), n_bytes);
         return at;
@@ -115,6 +116,64 @@ void write_vtr(const std::filesystem::path& path, const MacGrid<Dim>& grid, cons
             "      </CellData>\n      <Coordinates>\n" + coordinates +
             "      </Coordinates>\n    </Piece>\n  </RectilinearGrid>\n"
             "  <AppendedData encoding=\"raw\">\n   _";
+    text += data.bytes;
+    text += "\n  </AppendedData>\n</VTKFile>\n";
+    write_file_atomically(path, text);
+}
+
+void write_vtp(const std::filesystem::path& path, const std::vector<std::array<double, 3>>& centres,
+               const std::vector<double>& radii,
+               const std::vector<std::array<double, 3>>& velocities,
+               const std::vector<std::array<double, 3>>& angular_velocities)
+{
+    const std::size_t n = centres.size();
+    const auto flatten = [](const std::vector<std::array<double, 3>>& v) {
+        std::vector<double> out;
+        out.reserve(3 * v.size());
+        for (const auto& x : v) {
+            out.insert(out.end(), x.begin(), x.end());
+        }
+        return out;
+    };
+    Appended data;
+    const std::uint64_t points = data.add(flatten(centres));
+    const std::uint64_t radius = data.add(radii);
+    const std::uint64_t velocity = data.add(flatten(velocities));
+    const std::uint64_t omega = data.add(flatten(angular_velocities));
+    // One vertex cell per body so ParaView draws the centres without a filter.
+    std::vector<std::int64_t> ids(n);
+    std::vector<std::int64_t> ends(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        ids[k] = static_cast<std::int64_t>(k);
+        ends[k] = static_cast<std::int64_t>(k + 1);
+    }
+    const std::uint64_t connectivity = data.add(ids);
+    const std::uint64_t offsets = data.add(ends);
+    std::string text = "<?xml version=\"1.0\"?>\n"
+                       "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                       "header_type=\"UInt64\">\n  <PolyData>\n";
+    text += fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"{}\" NumberOfLines=\"0\" "
+                        "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
+                        n, n);
+    text += fmt::format(
+        "      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n"
+        "        <DataArray type=\"Float64\" Name=\"radius\" format=\"appended\" "
+        "offset=\"{}\"/>\n"
+        "        <DataArray type=\"Float64\" Name=\"velocity\" NumberOfComponents=\"3\" "
+        "format=\"appended\" offset=\"{}\"/>\n"
+        "        <DataArray type=\"Float64\" Name=\"angular_velocity\" "
+        "NumberOfComponents=\"3\" format=\"appended\" offset=\"{}\"/>\n"
+        "      </PointData>\n",
+        radius, velocity, omega);
+    text +=
+        fmt::format("      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+                    "format=\"appended\" offset=\"{}\"/>\n      </Points>\n",
+                    points);
+    text += fmt::format("      <Verts>\n        <DataArray type=\"Int64\" Name=\"connectivity\" "
+                        "format=\"appended\" offset=\"{}\"/>\n        <DataArray type=\"Int64\" "
+                        "Name=\"offsets\" format=\"appended\" offset=\"{}\"/>\n      </Verts>\n",
+                        connectivity, offsets);
+    text += "    </Piece>\n  </PolyData>\n  <AppendedData encoding=\"raw\">\n   _";
     text += data.bytes;
     text += "\n  </AppendedData>\n</VTKFile>\n";
     write_file_atomically(path, text);

@@ -71,6 +71,38 @@ TEST(VtkWriter, RectilinearGridReadsBackExactly)
     EXPECT_DOUBLE_EQ(velocity[3 * 1 + 2], 0.0);
 }
 
+TEST(VtkWriter, ParticlePolyDataReadsBackExactly)
+{
+    const fs::path path = fs::temp_directory_path() / "fddem_test_particles.vtp";
+    write_vtp(path, {{1.0, 2.0, 0.0}, {3.0, 4.5, 0.0}}, {0.125, 0.25},
+              {{0.5, -1.0, 0.0}, {0.0, 2.0, 0.0}}, {{0.0, 0.0, 3.0}, {0.0, 0.0, -1.0}});
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string file = buffer.str();
+    fs::remove(path);
+
+    EXPECT_NE(file.find("NumberOfPoints=\"2\" NumberOfVerts=\"2\""), std::string::npos);
+    const std::regex points("<Points>\\s*<DataArray[^>]*offset=\"([0-9]+)\"");
+    std::smatch match;
+    ASSERT_TRUE(std::regex_search(file, match, points));
+    const std::vector<double> centres = appended_array(file, std::stoull(match[1].str()));
+    EXPECT_EQ(centres, (std::vector<double>{1.0, 2.0, 0.0, 3.0, 4.5, 0.0}));
+    EXPECT_EQ(appended_array(file, offset_of(file, "radius")), (std::vector<double>{0.125, 0.25}));
+    const std::vector<double> velocity = appended_array(file, offset_of(file, "velocity"));
+    EXPECT_EQ(velocity, (std::vector<double>{0.5, -1.0, 0.0, 0.0, 2.0, 0.0}));
+    const std::vector<double> spin = appended_array(file, offset_of(file, "angular_velocity"));
+    EXPECT_DOUBLE_EQ(spin[2], 3.0);
+    EXPECT_DOUBLE_EQ(spin[5], -1.0);
+    // Vertex cells: Int64 connectivity 0, 1 and offsets 1, 2 (read as raw bytes).
+    const std::uint64_t at = offset_of(file, "offsets");
+    const char* base = file.data() + file.find('_', file.find("<AppendedData")) + 1 + at;
+    std::int64_t second_end = 0;
+    std::memcpy(&second_end, base + sizeof(std::uint64_t) + sizeof(std::int64_t),
+                sizeof second_end);
+    EXPECT_EQ(second_end, 2);
+}
+
 TEST(VtkWriter, CollectionListsFramesInOrder)
 {
     const fs::path path = fs::temp_directory_path() / "fddem_test_fields.pvd";
