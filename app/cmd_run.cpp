@@ -143,17 +143,21 @@ private:
     static std::vector<std::string> particle_columns()
     {
         if constexpr (Dim == 2) {
-            return {"time", "id", "x", "y", "u", "v", "omega", "theta", "fx", "fy", "torque"};
+            return {"time",  "id", "x",  "y",      "u",          "v",          "omega",
+                    "theta", "fx", "fy", "torque", "contact_fx", "contact_fy", "contact_torque"};
         } else {
-            return {"time", "id", "x",        "y",        "z",       "u",
-                    "v",    "w",  "omega_x",  "omega_y",  "omega_z", "fx",
-                    "fy",   "fz", "torque_x", "torque_y", "torque_z"};
+            return {"time",     "id",       "x",          "y",          "z",
+                    "u",        "v",        "w",          "omega_x",    "omega_y",
+                    "omega_z",  "fx",       "fy",         "fz",         "torque_x",
+                    "torque_y", "torque_z", "contact_fx", "contact_fy", "contact_fz"};
         }
     }
 
     void write_particles()
     {
-        for (const RigidBody<Dim>& b : sim_.bodies()) {
+        for (std::size_t k = 0; k < sim_.bodies().size(); ++k) {
+            const RigidBody<Dim>& b = sim_.bodies()[k];
+            const BodyCoupling<Dim>& coupling = sim_.couplings()[k];
             std::vector<double> row;
             row.reserve(particle_columns().size());
             row.push_back(sim_.clock().time);
@@ -165,7 +169,9 @@ private:
                 row.push_back(b.velocity[d]);
             }
             if constexpr (Dim == 2) {
-                for (const double x : {b.omega, b.angle, b.force[0], b.force[1], b.torque}) {
+                for (const double x :
+                     {b.omega, b.angle, b.force[0], b.force[1], b.torque, coupling.contact_force[0],
+                      coupling.contact_force[1], coupling.contact_torque}) {
                     row.push_back(x);
                 }
             } else {
@@ -178,6 +184,9 @@ private:
                 for (int d = 0; d < 3; ++d) {
                     row.push_back(b.torque[d]);
                 }
+                for (int d = 0; d < 3; ++d) {
+                    row.push_back(coupling.contact_force[d]);
+                }
             }
             particles_->append(row);
         }
@@ -186,6 +195,14 @@ private:
     /// Says what [nondimensional] made of the case (the values are also in case.toml).
     void report_derived()
     {
+        if (config_.contact_stiffness > 0.0) {
+            progress_.message(fmt::format(
+                "fddem: contact ({} coupling): k = {:.6g}, c = {:.6g}; a wall collision of the "
+                "lightest body lasts {:.3g} s with restitution {:.4g}; {} DEM sub-steps per "
+                "time step",
+                config_.contact_coupling, config_.contact_stiffness, config_.contact_damping,
+                config_.contact_duration, config_.contact_restitution, config_.contact_substeps));
+        }
         if (!config_.reynolds) {
             return;
         }
@@ -206,6 +223,20 @@ private:
 
     void watch(const StepReport& report)
     {
+        if (report.max_relative_overlap > max_relative_overlap_) {
+            max_overlap_ = report.max_overlap;
+            max_relative_overlap_ = report.max_relative_overlap;
+            max_overlap_time_ = sim_.clock().time;
+            if (max_relative_overlap_ > overlap_warning && !has_warned_overlap_) {
+                has_warned_overlap_ = true;
+                progress_.message(fmt::format(
+                    "warning: t = {:g} s: contact overlap {:.3g} m is {:.1f} % of the radius "
+                    "(above {:g} %); stiffen the contact (contact.stiffness or a shorter "
+                    "contact.duration)",
+                    sim_.clock().time, max_overlap_, 100.0 * max_relative_overlap_,
+                    100.0 * overlap_warning));
+            }
+        }
         if (!report.is_converged) {
             ++n_unconverged_;
             if (n_unconverged_ <= max_reported_unconverged) {
@@ -311,13 +342,19 @@ private:
         summary.set_phase_seconds("momentum", sim_.momentum_seconds());
         summary.set_phase_seconds("pressure", sim_.pressure_seconds());
         summary.set_phase_seconds("coupling", sim_.coupling_seconds());
+        summary.set_phase_seconds("contact", sim_.contact_seconds());
         summary.set_phase_seconds("other", stepping - sim_.momentum_seconds() -
-                                               sim_.pressure_seconds() - sim_.coupling_seconds());
+                                               sim_.pressure_seconds() - sim_.coupling_seconds() -
+                                               sim_.contact_seconds());
         if (!config_.bodies.empty()) {
             summary.set("bodies", static_cast<long>(config_.bodies.size()));
             summary.set("markers_per_body",
                         static_cast<long>(sim_.couplings().front().markers.size()));
             summary.set("last_rigid_defect", last.rigid_defect);
+            summary.set("contact_model", config_.contact_model);
+            summary.set("max_overlap", max_overlap_);
+            summary.set("max_relative_overlap", max_relative_overlap_);
+            summary.set("max_overlap_time", max_overlap_time_);
             if (config_.reynolds) {
                 summary.set("characteristic_velocity", config_.characteristic_velocity);
                 summary.set("characteristic_time",
@@ -335,6 +372,11 @@ private:
     PvdCollection particles_pvd_;
     std::unique_ptr<CsvHistory> particles_;
     long total_outer_ = 0;
+    static constexpr double overlap_warning = 0.05; ///< relative overlap that gets a warning
+    double max_overlap_ = 0.0;
+    double max_relative_overlap_ = 0.0;
+    double max_overlap_time_ = 0.0;
+    bool has_warned_overlap_ = false;
     long n_unconverged_ = 0;
     double max_courant_ = 0.0;
     bool has_warned_courant_ = false;

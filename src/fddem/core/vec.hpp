@@ -24,6 +24,17 @@ struct Angular<3> {
 template <int Dim>
 using AngularVec = typename Angular<Dim>::type;
 
+/// A zero angular quantity (Eigen leaves a default-constructed vector uninitialised).
+template <int Dim>
+[[nodiscard]] AngularVec<Dim> zero_angular()
+{
+    if constexpr (Dim == 2) {
+        return 0.0;
+    } else {
+        return Vec<3>::Zero();
+    }
+}
+
 /// ω × r for a scalar ω about z (2D).
 inline Vec<2> cross(double omega, const Vec<2>& r)
 {

@@ -20,6 +20,13 @@ struct BodyCoupling {
     double fluid_second_moment = 0.0;       ///< Σ ΔV_l |r_l⊥|²
     Vec<Dim> velocity_n = Vec<Dim>::Zero(); ///< U^n
     AngularVec<Dim> omega_n{};              ///< ω^n
+    // The DEM sub-steps of this step (contact/dem_step.hpp):
+    Vec<Dim> contact_force = Vec<Dim>::Zero();            ///< mean contact force [N]
+    AngularVec<Dim> contact_torque = zero_angular<Dim>(); ///< mean contact torque [N·m]
+    bool is_in_contact = false;                           ///< touched something this step
+    Vec<Dim> dem_centre = Vec<Dim>::Zero();               ///< end of the sub-steps [m]
+    Vec<Dim> dem_velocity = Vec<Dim>::Zero();             ///< [m/s]
+    AngularVec<Dim> dem_omega = zero_angular<Dim>();      ///< [rad/s]
 
     explicit BodyCoupling(MarkerSet<Dim> set)
         : markers(std::move(set)), offsets(markers.size()), positions(markers.size()),

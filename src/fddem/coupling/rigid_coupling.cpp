@@ -23,13 +23,13 @@ rigid_velocity(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offset
     }
     const double dt = in.dt;
     const double buoyant_mass = (in.body_density - in.fluid_density) * in.volume;
-    const Vec<Dim> velocity =
-        (buoyant_mass * (in.velocity_n / dt + in.gravity) + in.fluid_density * momentum) /
-        (in.body_density * in.volume / dt);
+    const Vec<Dim> velocity = (buoyant_mass * (in.velocity_n / dt + in.gravity) +
+                               in.fluid_density * momentum + in.external_force) /
+                              (in.body_density * in.volume / dt);
     const double fluid_inertia = in.fluid_density * in.fluid_second_moment;
-    const AngularVec<Dim> omega =
-        ((in.body_inertia - fluid_inertia) * in.omega_n / dt + in.fluid_density * angular) /
-        (in.body_inertia / dt);
+    const AngularVec<Dim> omega = ((in.body_inertia - fluid_inertia) * in.omega_n / dt +
+                                   in.fluid_density * angular + in.external_torque) /
+                                  (in.body_inertia / dt);
     return {velocity, omega};
 }
 

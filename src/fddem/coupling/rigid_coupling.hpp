@@ -4,15 +4,16 @@
 /// in dimensional form (docs/method.md §2). λ is the pseudo body force per unit mass of fluid
 /// on the markers (ρf λ is the force per volume added to the fluid's momentum equation).
 ///
-/// eq. (13): ρs V U^{n+1}/Δt = (ρs − ρf) V (U^n/Δt + g) + ρf Σ_l ΔV_l (u_l/Δt − λ*_l)
-/// eq. (14): J_s ω^{n+1}/Δt = (J_s − J_f) ω^n/Δt + ρf Σ_l ΔV_l r_l × (u_l/Δt − λ*_l)
+/// eq. (13): ρs V U^{n+1}/Δt = (ρs − ρf) V (U^n/Δt + g) + ρf Σ_l ΔV_l (u_l/Δt − λ*_l) + F_e
+/// eq. (14): J_s ω^{n+1}/Δt = (J_s − J_f) ω^n/Δt + ρf Σ_l ΔV_l r_l × (u_l/Δt − λ*_l) + M_e
 ///           (a ball's inertia is isotropic, so the gyroscopic ω × Jω of 3D vanishes)
 /// eq. (15): λ_l = λ*_l + (U^{n+1} + ω^{n+1} × r_l − u_l)/Δt
 /// with u_l = I(u) at marker l, r_l its offset from the centre, J_s = ρs ∫|r⊥|², and
 /// J_f = ρf Σ_l ΔV_l |r_l⊥|² the fluid inertia *as the markers represent it*, so that at
 /// convergence (u_l rigid) eq. (14) is exactly the discrete form of the paper's eq. (5b).
 /// Dividing the particle's equation of motion ρs V dU/dt = F_H + (ρs − ρf) V g by it gives the
-/// hydrodynamic force for output: F_H = ρs V (U^{n+1} − U^n)/Δt − (ρs − ρf) V g.
+/// hydrodynamic force for output: F_H = ρs V (U^{n+1} − U^n)/Δt − (ρs − ρf) V g − F_e.
+/// F_e, M_e: other forces on the body (contacts, "additive" coupling); zero in the paper.
 
 #include "fddem/bodies/rigid_body.hpp"
 
@@ -38,6 +39,10 @@ struct RigidUpdateInput {
     double fluid_second_moment; ///< Σ ΔV_l |r_l⊥|² [m⁵] (2D: m⁴)
     Vec<Dim> gravity;           ///< g [m/s²]
     double dt;                  ///< Δt [s]
+    /// Any other force on the body over the step, e.g. the mean contact force of the DEM
+    /// sub-steps (contact.coupling = "additive") [N]; added to the right side of eq. (13).
+    Vec<Dim> external_force = Vec<Dim>::Zero();
+    AngularVec<Dim> external_torque = zero_angular<Dim>(); ///< likewise for eq. (14) [N·m]
 };
 
 /// eqs. (13)–(14): U^{n+1}, ω^{n+1} of a free body.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/io/case_reader.hpp"
 
+#include "fddem/contact/linear_spring_dashpot.hpp"
 #include "fddem/core/errors.hpp"
 #include "fddem/io/case_schema.hpp"
 #include "fddem/io/nondimensional.hpp"
@@ -11,7 +12,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -286,6 +289,7 @@ public:
         check_contradictions(c);
         derive(c);
         check_bodies(c);
+        derive_contact(c);
         std::ostringstream as_run;
         as_run << "# The case as run by fddem: defaults filled in and --set overrides applied.\n"
                << "# Source: " << where_.file() << "\n\n"
@@ -494,6 +498,9 @@ private:
             c.density_ratio = real("nondimensional", "density_ratio");
         }
         c.characteristic_velocity = real("nondimensional", "velocity");
+        c.contact_model = text("contact", "model");
+        c.contact_coupling = text("contact", "coupling");
+        c.contact_beta = real("contact", "velocity_damping");
         if (const toml::array* bodies = find_table_array(doc_, "bodies")) {
             for (const toml::node& element : *bodies) {
                 const toml::table& t = *element.as_table();
@@ -653,6 +660,92 @@ private:
                 }
             }
         }
+    }
+
+    /// [contact] → k, c and N_i (recorded in [derived]): from stiffness and damping, or from
+    /// the restitution and duration of a wall collision of the lightest free body.
+    void derive_contact(CaseConfig& c)
+    {
+        const toml::node* stiffness = node("contact", "stiffness");
+        const toml::node* damping = node("contact", "damping");
+        const toml::node* restitution = node("contact", "restitution");
+        const toml::node* duration = node("contact", "duration");
+        const toml::node* substeps = node("contact", "substeps");
+        if (stiffness != nullptr && (restitution != nullptr || duration != nullptr)) {
+            where_.fail(restitution != nullptr ? "contact.restitution" : "contact.duration",
+                        restitution != nullptr ? restitution : duration,
+                        "give either contact.stiffness (and damping) or contact.restitution and "
+                        "contact.duration, not both");
+        }
+        if (damping != nullptr && stiffness == nullptr) {
+            where_.fail("contact.damping", damping,
+                        "contact.damping needs contact.stiffness (with restitution and duration "
+                        "fddem derives it)");
+        }
+        double lightest = std::numeric_limits<double>::infinity();
+        for (const BodyConfig& b : c.bodies) {
+            if (b.motion == "free") {
+                const double r = 0.5 * b.diameter;
+                const double volume = dimension_ == 2 ? std::numbers::pi * r * r
+                                                      : 4.0 / 3.0 * std::numbers::pi * r * r * r;
+                lightest = std::min(lightest, b.density * volume);
+            }
+        }
+        if (c.contact_model == "none" || !std::isfinite(lightest)) {
+            return; // no collisions to resolve
+        }
+        LinearSpringDashpot::Params law{};
+        try {
+            if (stiffness != nullptr) {
+                law = {stiffness->value<double>().value_or(0.0),
+                       damping != nullptr ? damping->value<double>().value_or(0.0) : 0.0};
+            } else {
+                const double e =
+                    restitution != nullptr ? restitution->value<double>().value_or(1.0) : 1.0;
+                const double t =
+                    duration != nullptr ? duration->value<double>().value_or(c.dt) : c.dt;
+                law = LinearSpringDashpot::from_restitution(e, t, lightest);
+            }
+            const LinearSpringDashpot model(law, lightest);
+            c.contact_stiffness = law.stiffness;
+            c.contact_damping = law.damping;
+            c.contact_duration = model.contact_time(lightest);
+            c.contact_restitution = model.restitution(lightest);
+        } catch (const InputError& e) {
+            where_.fail(e.key(),
+                        stiffness != nullptr ? (damping != nullptr ? damping : stiffness)
+                                             : doc_.get("contact"),
+                        e.what());
+        }
+        // The shortest collision: two of the lightest bodies (reduced mass m/2).
+        const double shortest =
+            LinearSpringDashpot({c.contact_stiffness, 0.0}, lightest).contact_time(0.5 * lightest);
+        constexpr double min_per_collision = 10.0;
+        constexpr double auto_per_collision = 80.0;
+        const auto given = substeps->value<std::int64_t>().value_or(0);
+        if (given == 0) {
+            c.contact_substeps =
+                std::max(1, static_cast<int>(std::ceil(auto_per_collision * c.dt / shortest)));
+        } else {
+            c.contact_substeps = static_cast<int>(given);
+            const double per_collision = shortest / (c.dt / static_cast<double>(given));
+            if (per_collision < min_per_collision) {
+                where_.fail(
+                    "contact.substeps", substeps,
+                    fmt::format("{} DEM sub-steps per time step resolve a collision "
+                                "(duration {:.3g} s) with only {:.1f} sub-steps; at least "
+                                "{:g} are needed: use substeps >= {} (or 0 for automatic)",
+                                given, shortest, per_collision, min_per_collision,
+                                static_cast<long>(std::ceil(min_per_collision * c.dt / shortest))));
+            }
+        }
+        derived_.insert_or_assign("contact_stiffness", c.contact_stiffness);
+        derived_.insert_or_assign("contact_damping", c.contact_damping);
+        derived_.insert_or_assign("contact_duration", c.contact_duration);
+        derived_.insert_or_assign("contact_restitution", c.contact_restitution);
+        derived_.insert_or_assign("contact_substeps",
+                                  static_cast<std::int64_t>(c.contact_substeps));
+        doc_.insert_or_assign("derived", derived_);
     }
 
     void check_contradictions(const CaseConfig& c) const

@@ -160,6 +160,36 @@ std::vector<KeySpec> case_schema()
                            "recommends about 1.45)."),
                        0.5, 10.0, false, false));
 
+    s.push_back(choice(key("contact", "model", T::string, none, "\"linear\"",
+                           "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "
+                           "eq. (18)) or none (bodies pass through each other and the walls)."),
+                       {"linear", "none"}));
+    s.push_back(choice(key("contact", "coupling", T::string, none, "\"additive\"",
+                           "additive: the mean contact force of the sub-steps is added to eqs. "
+                           "(13)–(14); paper: while in contact, DEM replaces (13)–(14) and (17)."),
+                       {"additive", "paper"}));
+    s.push_back(positive(key("contact", "stiffness", T::real, "N/m", "none",
+                             "Spring stiffness k (2D: per unit depth); or give restitution and "
+                             "duration instead.")));
+    s.push_back(ranged(key("contact", "damping", T::real, "N·s/m", "none",
+                           "Dashpot coefficient c (with stiffness; default 0)."),
+                       0.0, inf, false, false));
+    s.push_back(ranged(key("contact", "restitution", T::real, none, "none",
+                           "Restitution coefficient e of a wall collision of the lightest body "
+                           "(with duration; default 1); fddem derives k and c."),
+                       0.0, 1.0, true, false));
+    s.push_back(
+        positive(key("contact", "duration", T::real, "s", "none",
+                     "Duration t_c of a wall collision of the lightest body; fddem "
+                     "derives k and c. Default (neither stiffness nor duration): time.dt.")));
+    s.push_back(ranged(key("contact", "velocity_damping", T::real, "kg/s", "0.0",
+                           "Velocity damping β of eq. (18) (0: none, as in the paper)."),
+                       0.0, inf, false, false));
+    s.push_back(ranged(key("contact", "substeps", T::integer, none, "0",
+                           "DEM sub-steps N_i per time step (Δt_i = Δt/N_i); 0: enough for 80 "
+                           "per pair collision. At least 10 per collision are required."),
+                       0, 10000000, false, false));
+
     s.push_back(positive(key("nondimensional", "reynolds", T::real, none, "none",
                              "Re = ρf U_c D / μ (D: the first body's diameter); fddem derives "
                              "fluid.viscosity.")));
@@ -180,6 +210,17 @@ std::vector<KeySpec> case_schema()
     s.push_back(key("derived", "wall_factor", T::real, none, "none",
                     "Happel & Brenner wall factor K of eq. (20), written by fddem; ignored on "
                     "input."));
+
+    s.push_back(key("derived", "contact_stiffness", T::real, "N/m", "none",
+                    "Contact stiffness k used, written by fddem; ignored on input."));
+    s.push_back(key("derived", "contact_damping", T::real, "N·s/m", "none",
+                    "Contact damping c used, written by fddem; ignored on input."));
+    s.push_back(key("derived", "contact_duration", T::real, "s", "none",
+                    "Duration of a wall collision of the lightest body, written by fddem."));
+    s.push_back(key("derived", "contact_restitution", T::real, none, "none",
+                    "Restitution of a wall collision of the lightest body, written by fddem."));
+    s.push_back(key("derived", "contact_substeps", T::integer, none, "none",
+                    "DEM sub-steps N_i used, written by fddem; ignored on input."));
 
     s.push_back(key("output", "directory", T::string, none, "\"\"",
                     "Run directory; empty: runs/<case file name>. `fddem run -o` overrides it."));

@@ -74,6 +74,17 @@ struct CaseConfig {
     std::string kernel = "hat";        ///< delta kernel: "hat", "roma3", "peskin4"
     double marker_spacing_ratio = 1.4; ///< h_L / h when n_rings is not given
 
+    // [contact]: the DEM collision model (eq. (18)); stiffness, damping and substeps are
+    // resolved by the reader (from restitution and duration when those are given).
+    std::string contact_model = "linear";      ///< "linear" (spring–dashpot) or "none"
+    std::string contact_coupling = "additive"; ///< "additive" or "paper"
+    double contact_stiffness = 0.0;            ///< k [N/m] (2D: per unit depth)
+    double contact_damping = 0.0;              ///< c [N·s/m]
+    double contact_beta = 0.0;                 ///< velocity damping β [kg/s]
+    int contact_substeps = 1;                  ///< N_i
+    double contact_duration = 0.0;    ///< wall collision of the lightest body [s] (derived)
+    double contact_restitution = 1.0; ///< its restitution (derived)
+
     // [nondimensional]: given, fddem derives viscosity, gravity and body densities.
     std::optional<double> reynolds;       ///< Re = ρf U_c D / μ
     std::optional<double> density_ratio;  ///< ρr = ρs / ρf

@@ -130,6 +130,23 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
         bodies_.push_back(body);
         couplings_.emplace_back(make_ball_markers(body.shape, n_rings));
     }
+    if (config.contact_model == "linear" && !bodies_.empty()) {
+        dem_ = DemSettings{{config.contact_stiffness, config.contact_damping},
+                           config.contact_beta,
+                           std::max(1, config.contact_substeps)};
+        is_paper_contact_ = config.contact_coupling == "paper";
+        double largest = 0.0;
+        for (const RigidBody<Dim>& body : bodies_) {
+            largest = std::max(largest, body.shape.diameter);
+        }
+        contact_cells_.emplace(grid_.origin(), grid_.length(), largest);
+        walls_.origin = grid_.origin();
+        walls_.length = grid_.length();
+        for (int d = 0; d < Dim; ++d) {
+            walls_.has_walls[static_cast<std::size_t>(d)] =
+                !bc_.is_periodic[static_cast<std::size_t>(d)];
+        }
+    }
     place_markers();
     set_uniform_body_force(force);
     fill_velocity_ghosts(grid_, bc_, state_.u);
@@ -224,11 +241,16 @@ double Simulation<Dim>::update_bodies(double dt)
                     c.fluid[l] = interpolate_velocity<Dim, Kernel>(grid_, state_.u, c.positions[l]);
                 }
                 RigidVelocity<Dim> motion{body.velocity, body.omega};
-                if (body.motion == Motion::free) {
+                if (body.motion == Motion::free && is_paper_contact_ && c.is_in_contact) {
+                    // §2.3: "When the collision happens, the DEM is used in place of (13) and
+                    // (14)": the body moves as the sub-steps say; the fluid is made to follow.
+                    motion = {c.dem_velocity, c.dem_omega};
+                } else if (body.motion == Motion::free) {
                     const RigidUpdateInput<Dim> in{
-                        c.velocity_n,          c.omega_n,      body.density,
-                        body.volume(),         body.inertia(), properties_.density,
-                        c.fluid_second_moment, gravity_,       dt};
+                        c.velocity_n,          c.omega_n,       body.density,
+                        body.volume(),         body.inertia(),  properties_.density,
+                        c.fluid_second_moment, gravity_,        dt,
+                        c.contact_force,       c.contact_torque};
                     motion = rigid_velocity<Dim>(in, c.offsets, c.markers.volumes, c.fluid,
                                                  c.lambda_star); // eqs. (13)–(14)
                 }
@@ -274,11 +296,56 @@ void Simulation<Dim>::move_bodies(double dt)
         if (body.motion == Motion::fixed) {
             continue;
         }
-        body.centre += 0.5 * dt * (body.velocity + c.velocity_n); // eq. (17)
+        if (is_paper_contact_ && c.is_in_contact) {
+            body.centre = c.dem_centre; // §2.3: "DEM is used to update the position"
+        } else {
+            body.centre += 0.5 * dt * (body.velocity + c.velocity_n); // eq. (17)
+        }
         if constexpr (Dim == 2) {
             body.angle += 0.5 * dt * (body.omega + c.omega_n);
         }
     }
+}
+
+template <int Dim>
+void Simulation<Dim>::resolve_contacts(double dt, StepReport& report)
+{
+    // eq. (18) in N_i sub-steps from the level-n state. The force held over the sub-steps is
+    // the buoyant weight (ρs − ρf) V g and, in the additive coupling, the hydrodynamic force of
+    // the last step (the paper's eq. (18) has the weight only: the fluid is left out while DEM
+    // acts).
+    dem_bodies_.resize(bodies_.size());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const RigidBody<Dim>& body = bodies_[b];
+        DemBody<Dim>& d = dem_bodies_[b];
+        d.centre = body.centre;
+        d.velocity = body.velocity;
+        d.omega = body.omega;
+        d.radius = body.shape.radius();
+        d.mass = body.mass();
+        d.inertia = body.inertia();
+        d.is_mobile = body.motion == Motion::free;
+        d.steady_force = (body.density - properties_.density) * body.volume() * gravity_;
+        d.steady_torque = zero_angular<Dim>();
+        if (!is_paper_contact_) {
+            d.steady_force += body.force;
+            d.steady_torque += body.torque;
+        }
+    }
+    const DemOutcome<Dim> outcome =
+        advance_contacts<Dim>(dem_bodies_, walls_, *dem_, dt, *contact_cells_);
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        BodyCoupling<Dim>& c = couplings_[b];
+        c.is_in_contact = outcome.has_contact[b];
+        c.contact_force = outcome.mean_force[b];
+        c.contact_torque = outcome.mean_torque[b];
+        c.dem_centre = dem_bodies_[b].centre;
+        c.dem_velocity = dem_bodies_[b].velocity;
+        c.dem_omega = dem_bodies_[b].omega;
+    }
+    report.max_overlap = outcome.max_overlap;
+    report.max_relative_overlap = outcome.max_relative_overlap;
+    report.contacts = outcome.n_contacts;
 }
 
 template <int Dim>
@@ -312,6 +379,11 @@ StepReport Simulation<Dim>::advance()
     const double cell = grid_.spacing().minCoeff();
 
     StepReport report;
+    if (dem_) {
+        const auto start = std::chrono::steady_clock::now();
+        resolve_contacts(dt, report);
+        contact_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
+    }
     double mass_residual =
         compute_divergence(grid_, state_.u, state_.divergence) * cell / reference_velocity();
     for (int k = 1; k <= config_.max_outer_iterations; ++k) {

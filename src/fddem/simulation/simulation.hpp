@@ -3,6 +3,7 @@
 /// Simulation<Dim> owns everything of one run and advances it one time step at a time.
 
 #include "fddem/bodies/rigid_body.hpp"
+#include "fddem/contact/dem_step.hpp"
 #include "fddem/core/logger.hpp"
 #include "fddem/coupling/body_coupling.hpp"
 #include "fddem/coupling/delta_kernel.hpp"
@@ -14,6 +15,7 @@
 #include "fddem/simulation/case_config.hpp"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace fddem {
@@ -28,6 +30,9 @@ struct StepReport {
     double rate_of_change = 0.0;    ///< max |u^{n+1} − u^n| / Δt · L / U_ref² (steady check)
     double rigid_defect = 0.0; ///< max |U + ω×r − I(u)| / U_ref over markers, last iteration
     double body_change = 0.0;  ///< max (|ΔU| + R|Δω|) / U_ref over bodies, last iteration
+    double max_overlap = 0.0;  ///< largest contact overlap α in the DEM sub-steps [m]
+    double max_relative_overlap = 0.0; ///< largest α / radius (of the smaller body)
+    int contacts = 0;                  ///< contacts at the end of the DEM sub-steps
 };
 
 /// Time and step counters.
@@ -74,6 +79,8 @@ public:
     }
     /// Seconds spent so far in the fictitious-domain coupling (eqs. (13)–(16)).
     [[nodiscard]] double coupling_seconds() const noexcept { return coupling_seconds_; }
+    /// Seconds spent so far in the DEM sub-steps (eq. (18)).
+    [[nodiscard]] double contact_seconds() const noexcept { return contact_seconds_; }
     [[nodiscard]] const CaseConfig& config() const noexcept { return config_; }
     [[nodiscard]] const PoissonSolver<Dim>& pressure_solver() const noexcept { return *poisson_; }
     /// Seconds spent so far in the momentum and pressure stages.
@@ -89,6 +96,7 @@ private:
     double update_bodies(double dt);
     void spread_marker_forces();
     void move_bodies(double dt);
+    void resolve_contacts(double dt, StepReport& report);
     void advance_time_level_in_systems();
 
     CaseConfig config_;
@@ -108,9 +116,15 @@ private:
     std::vector<RigidBody<Dim>> bodies_;
     std::vector<BodyCoupling<Dim>> couplings_;
     AnyKernel kernel_;
+    std::optional<DemSettings> dem_; ///< none: no collisions (contact.model = "none")
+    bool is_paper_contact_ = false;  ///< contact.coupling = "paper"
+    std::optional<CellList<Dim>> contact_cells_;
+    DemWalls<Dim> walls_{};
+    std::vector<DemBody<Dim>> dem_bodies_;
     Vec<Dim> gravity_ = Vec<Dim>::Zero();
     Vec<Dim> uniform_force_ = Vec<Dim>::Zero();
     double coupling_seconds_ = 0.0;
+    double contact_seconds_ = 0.0;
     double momentum_seconds_ = 0.0;
     double pressure_seconds_ = 0.0;
 };

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -116,6 +117,7 @@ std::vector<BadCase> bad_cases()
 {
     const std::string v = valid_case;
     const std::string f = "bad.toml";
+    const std::string body = "[[bodies]]\ndiameter = 0.5\ndensity = 2.0\nposition = [0.5, 1.0]\n";
     return {
         {"syntax",
          replace(v, "density = 1.0", "density = = 1.0"),
@@ -301,6 +303,42 @@ std::vector<BadCase> bad_cases()
          1,
          "case",
          "must be a section"},
+        // [contact] (one body: lines 18-21; the [contact] section starts on line 22)
+        {"contact_stiffness_and_duration",
+         v + body + "[contact]\nstiffness = 100.0\nduration = 0.01\n",
+         {},
+         f,
+         24,
+         "contact.duration",
+         "not both"},
+        {"contact_damping_without_stiffness",
+         v + body + "[contact]\ndamping = 1.0\n",
+         {},
+         f,
+         23,
+         "contact.damping",
+         "needs contact.stiffness"},
+        {"contact_too_few_substeps",
+         v + body + "[contact]\nstiffness = 1e6\nsubsteps = 1\n",
+         {},
+         f,
+         24,
+         "contact.substeps",
+         "at least 10 are needed"},
+        {"contact_overdamped",
+         v + body + "[contact]\nstiffness = 1.0\ndamping = 100.0\n",
+         {},
+         f,
+         24,
+         "contact.damping",
+         "overdamped"},
+        {"contact_zero_restitution",
+         v + body + "[contact]\nrestitution = 0.0\nduration = 0.001\n",
+         {},
+         f,
+         23,
+         "contact.restitution",
+         "out of range"},
         {"set_syntax", v, {"time.dt"}, "--set", 0, "time.dt", "expected section.key=value"},
         {"set_unknown_key", v, {"time.dtt=1"}, "--set", 0, "time.dtt", "did you mean 'time.dt'"},
         {"set_out_of_range", v, {"time.dt=0"}, "--set", 0, "time.dt", "out of range"},
@@ -332,6 +370,27 @@ TEST_P(BadInput, StopsWithOneClearMessage)
 
 INSTANTIATE_TEST_SUITE_P(CaseReader, BadInput, ::testing::ValuesIn(bad_cases()),
                          [](const auto& param_info) { return std::string(param_info.param.name); });
+
+TEST(CaseReader, ContactStiffnessAndSubstepsAreDerivedFromRestitutionAndDuration)
+{
+    const std::string text = valid_case + "[[bodies]]\ndiameter = 0.5\ndensity = 2.0\n"
+                                          "position = [0.5, 1.0]\n[contact]\nrestitution = 0.5\n"
+                                          "duration = 0.001\n";
+    const CaseConfig c = read_case_string(text, "contact.toml", {});
+    const double mass = 2.0 * 3.141592653589793 * 0.0625; // ρs π r²
+    // e = exp(−ζπ/√(1−ζ²)), t_c = π/(ω₀√(1−ζ²)), k = m ω₀², c = 2ζ√(k m)
+    const double zeta = -std::log(0.5) / std::sqrt(M_PI * M_PI + std::log(0.5) * std::log(0.5));
+    const double omega_0 = M_PI / 0.001 / std::sqrt(1.0 - zeta * zeta);
+    EXPECT_NEAR(c.contact_stiffness, mass * omega_0 * omega_0, 1e-9 * c.contact_stiffness);
+    EXPECT_NEAR(c.contact_damping, 2.0 * zeta * std::sqrt(c.contact_stiffness * mass),
+                1e-9 * c.contact_damping);
+    EXPECT_NEAR(c.contact_duration, 0.001, 1e-15);
+    EXPECT_NEAR(c.contact_restitution, 0.5, 1e-12);
+    // 80 sub-steps per collision of two such bodies (reduced mass m/2, undamped duration).
+    const double pair = M_PI * std::sqrt(0.5 * mass / c.contact_stiffness);
+    EXPECT_EQ(c.contact_substeps, static_cast<int>(std::ceil(80.0 * 0.01 / pair)));
+    EXPECT_NE(c.as_run.find("contact_substeps"), std::string::npos);
+}
 
 TEST(CaseReader, MissingFileIsAnInputError)
 {
