@@ -310,10 +310,11 @@ void Simulation<Dim>::move_bodies(double dt)
 template <int Dim>
 void Simulation<Dim>::resolve_contacts(double dt, StepReport& report)
 {
-    // eq. (18) in N_i sub-steps from the level-n state. The force held over the sub-steps is
-    // the buoyant weight (ρs − ρf) V g and, in the additive coupling, the hydrodynamic force of
-    // the last step (the paper's eq. (18) has the weight only: the fluid is left out while DEM
-    // acts).
+    // eq. (18) in N_i sub-steps from the level-n state, with the buoyant weight (ρs − ρf) V g
+    // held over the sub-steps, as the paper's eq. (18). The last step's hydrodynamic force is
+    // deliberately left out: it is mostly the fluid's reaction to the body's own acceleration
+    // (added mass), and holding it over the next step feeds back on a body resting on a wall
+    // (Fig. 5 case: the lagged force pushed the disk off the floor again and again).
     dem_bodies_.resize(bodies_.size());
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const RigidBody<Dim>& body = bodies_[b];
@@ -327,10 +328,6 @@ void Simulation<Dim>::resolve_contacts(double dt, StepReport& report)
         d.is_mobile = body.motion == Motion::free;
         d.steady_force = (body.density - properties_.density) * body.volume() * gravity_;
         d.steady_torque = zero_angular<Dim>();
-        if (!is_paper_contact_) {
-            d.steady_force += body.force;
-            d.steady_torque += body.torque;
-        }
     }
     const DemOutcome<Dim> outcome =
         advance_contacts<Dim>(dem_bodies_, walls_, *dem_, dt, *contact_cells_);
