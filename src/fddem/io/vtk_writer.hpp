@@ -23,7 +23,8 @@ void write_vtr(const std::filesystem::path& path, const MacGrid<Dim>& grid, cons
 /// Particles for ParaView: a PolyData (.vtp) of the body centres with point data radius,
 /// velocity and angular velocity (draw disks with the Glyph filter scaled by "radius"). Atomic.
 void write_vtp(const std::filesystem::path& path, const std::vector<std::array<double, 3>>& centres,
-               const std::vector<double>& radii, const std::vector<std::array<double, 3>>& velocities,
+               const std::vector<double>& radii,
+               const std::vector<std::array<double, 3>>& velocities,
                const std::vector<std::array<double, 3>>& angular_velocities);
 
 /// The .pvd collection: (time, file relative to the .pvd) pairs, rewritten atomically.
