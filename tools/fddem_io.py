@@ -50,5 +50,49 @@ def read_case_title(run_dir):
             for line in f:
                 stripped = line.strip()
                 if stripped.startswith("title"):
-                    return stripped.split("=", 1)[1].strip().strip('"')
+                    return stripped.split("=", 1)[1].strip().strip("'\"")
     return os.path.basename(os.path.normpath(run_dir))
+
+
+def read_case(run_dir):
+    """The case as run (case.toml) as a dict (Python ≥ 3.11 tomllib)."""
+    import tomllib
+
+    with open(os.path.join(run_dir, "case.toml"), "rb") as f:
+        return tomllib.load(f)
+
+
+def read_pvd(run_dir, name="fields.pvd"):
+    """A .pvd collection as a list of (time, absolute file path), in time order."""
+    import xml.etree.ElementTree as ET
+
+    root = ET.parse(os.path.join(run_dir, name)).getroot()
+    frames = [(float(d.get("timestep")), os.path.join(run_dir, d.get("file"))) for d in root.iter("DataSet")]
+    return sorted(frames)
+
+
+def read_vtr(path):
+    """A fddem .vtr file (appended raw, UInt64 headers, Float64 data) as a dict with the node
+    coordinates "x", "y", "z" and the cell arrays by name, each shaped (nz, ny, nx[, 3])."""
+    import re
+
+    with open(path, "rb") as f:
+        data = f.read()
+    start = data.index(b"<AppendedData")
+    base = data.index(b"_", start) + 1
+    header = data[:start].decode()
+
+    def array(offset):
+        n_bytes = int(np.frombuffer(data, dtype="<u8", count=1, offset=base + offset)[0])
+        return np.frombuffer(data, dtype="<f8", count=n_bytes // 8, offset=base + offset + 8)
+
+    out = {}
+    for m in re.finditer(r'<DataArray type="Float64" Name="(\w+)"( NumberOfComponents="(\d)")?'
+                         r' format="appended" offset="(\d+)"/>', header):
+        out[m.group(1)] = (array(int(m.group(4))), int(m.group(3) or 1))
+    x, y, z = (out.pop(k)[0] for k in ("x", "y", "z"))
+    shape = (max(len(z) - 1, 1), len(y) - 1, len(x) - 1)
+    result = {"x": x, "y": y, "z": z}
+    for name, (values, components) in out.items():
+        result[name] = values.reshape(shape + ((components,) if components > 1 else ()))
+    return result
