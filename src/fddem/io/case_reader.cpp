@@ -80,6 +80,12 @@ std::string suggestion(const std::string& wrong, const std::vector<std::string>&
     if (best_distance <= std::max<std::size_t>(2, wrong.size() / 3)) {
         return "; did you mean '" + best + "'?";
     }
+    // Or a valid name with a word added ("time.end_time" for "time.end").
+    for (const auto& v : valid) {
+        if (wrong.starts_with(v + "_") || v.starts_with(wrong + "_")) {
+            return "; did you mean '" + v + "'?";
+        }
+    }
     return "";
 }
 
