@@ -230,7 +230,7 @@ private:
             if (max_relative_overlap_ > overlap_warning && !has_warned_overlap_) {
                 has_warned_overlap_ = true;
                 progress_.message(fmt::format(
-                    "warning: t = {:g} s: contact overlap {:.3g} m is {:.1f} % of the radius "
+                    "warning: t = {:g} s: contact overlap {:.3g} is {:.1f} % of the radius "
                     "(above {:g} %); stiffen the contact (contact.stiffness or a shorter "
                     "contact.duration)",
                     sim_.clock().time, max_overlap_, 100.0 * max_relative_overlap_,

@@ -164,9 +164,10 @@ std::vector<KeySpec> case_schema()
                            "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "
                            "eq. (18)) or none (bodies pass through each other and the walls)."),
                        {"linear", "none"}));
-    s.push_back(choice(key("contact", "coupling", T::string, none, "\"additive\"",
-                           "additive: the mean contact force of the sub-steps is added to eqs. "
-                           "(13)–(14); paper: while in contact, DEM replaces (13)–(14) and (17)."),
+    s.push_back(choice(key("contact", "coupling", T::string, none, "\"paper\"",
+                           "paper: while in contact, DEM replaces (13)–(14) and (17) (stable in "
+                           "piles); additive: the mean contact force of the sub-steps is added "
+                           "to (13)–(14) (unstable when collisions are much shorter than Δt)."),
                        {"additive", "paper"}));
     s.push_back(positive(key("contact", "stiffness", T::real, "N/m", "none",
                              "Spring stiffness k (2D: per unit depth); or give restitution and "

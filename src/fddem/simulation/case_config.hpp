@@ -76,14 +76,14 @@ struct CaseConfig {
 
     // [contact]: the DEM collision model (eq. (18)); stiffness, damping and substeps are
     // resolved by the reader (from restitution and duration when those are given).
-    std::string contact_model = "linear";      ///< "linear" (spring–dashpot) or "none"
-    std::string contact_coupling = "additive"; ///< "additive" or "paper"
-    double contact_stiffness = 0.0;            ///< k [N/m] (2D: per unit depth)
-    double contact_damping = 0.0;              ///< c [N·s/m]
-    double contact_beta = 0.0;                 ///< velocity damping β [kg/s]
-    int contact_substeps = 1;                  ///< N_i
-    double contact_duration = 0.0;    ///< wall collision of the lightest body [s] (derived)
-    double contact_restitution = 1.0; ///< its restitution (derived)
+    std::string contact_model = "linear";   ///< "linear" (spring–dashpot) or "none"
+    std::string contact_coupling = "paper"; ///< "paper" or "additive"
+    double contact_stiffness = 0.0;         ///< k [N/m] (2D: per unit depth)
+    double contact_damping = 0.0;           ///< c [N·s/m]
+    double contact_beta = 0.0;              ///< velocity damping β [kg/s]
+    int contact_substeps = 1;               ///< N_i
+    double contact_duration = 0.0;          ///< wall collision of the lightest body [s] (derived)
+    double contact_restitution = 1.0;       ///< its restitution (derived)
 
     // [nondimensional]: given, fddem derives viscosity, gravity and body densities.
     std::optional<double> reynolds;       ///< Re = ρf U_c D / μ

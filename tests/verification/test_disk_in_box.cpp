@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// DEM collisions coupled to the fluid (eq. (18) with eqs. (13)–(17)): the paper's Fig. 5 disk
+// on a coarser grid falls, touches the floor, and comes to rest on it without sinking in.
+
+#include "fddem/io/case_reader.hpp"
+#include "fddem/simulation/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace fddem {
+namespace {
+
+const std::string fig05 =
+    std::string(FDDEM_SOURCE_DIR) + "/cases/paper/fig05_disk_in_box/case.toml";
+
+struct Landing {
+    double first_contact = -1.0; ///< time of the first step with a contact
+    double max_relative_overlap = 0.0;
+    double max_speed = 0.0;
+    double rest_from = -1.0; ///< time from which |U| < 1e-3 at every step
+};
+
+Landing run_case(Simulation<2>& sim)
+{
+    Landing out;
+    StepReport report;
+    do {
+        report = sim.advance();
+        const RigidBody<2>& body = sim.bodies().front();
+        const double t = sim.clock().time;
+        if (report.max_overlap > 0.0 && out.first_contact < 0.0) {
+            out.first_contact = t;
+        }
+        out.max_relative_overlap = std::max(out.max_relative_overlap, report.max_relative_overlap);
+        out.max_speed = std::max(out.max_speed, body.velocity.norm());
+        if (body.velocity.norm() >= 1e-3) {
+            out.rest_from = -1.0;
+        } else if (out.rest_from < 0.0) {
+            out.rest_from = t;
+        }
+    } while (!sim.is_finished(report));
+    return out;
+}
+
+TEST(DiskInBox, FallsLandsAndComesToRestOnTheFloor)
+{
+    // Fig. 5 case (k = 1e7, restitution 0.3, β = 2, paper coupling) at h = 1/32, N_a = 3.
+    CaseConfig config = read_case(fig05, {"domain.cells=[64,192]", "time.end=1.2"});
+    config.bodies.front().n_rings = 3;
+    Simulation<2> sim(config);
+    const Landing landing = run_case(sim);
+    const RigidBody<2>& body = sim.bodies().front();
+    const double r = body.shape.radius();
+    std::printf("max speed %.3f, first contact t = %.3f, at rest from t = %.3f, "
+                "max overlap %.2e r, rest at (%.5f, %.5f)\n",
+                landing.max_speed, landing.first_contact, landing.rest_from,
+                landing.max_relative_overlap, body.centre[0], body.centre[1]);
+    // It falls 3.875 cm at about 5.5 cm/s (5.55 at h = 1/64): contact near t = 0.8.
+    EXPECT_GT(landing.max_speed, 4.5);
+    EXPECT_LT(landing.max_speed, 7.0);
+    EXPECT_GT(landing.first_contact, 0.6);
+    EXPECT_LT(landing.first_contact, 1.0);
+    // Stiff contact: the overlap stays below 1 % of the radius, and the disk rests on the
+    // floor (centre one radius up), not in it, well before the end.
+    EXPECT_LT(landing.max_relative_overlap, 0.01);
+    EXPECT_NEAR(body.centre[1], r, 0.01 * r);
+    EXPECT_GT(landing.rest_from, 0.0);
+    EXPECT_LT(landing.rest_from, 1.1);
+    // Released on the centre line of a symmetric box: it lands there.
+    EXPECT_NEAR(body.centre[0], 1.0, 0.02);
+}
+
+} // namespace
+} // namespace fddem
