@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Micro-benchmarks of the hot kernels of one SIMPLE outer iteration, per grid size:
 // momentum assembly (7)–(8), one red-black sweep, the pressure Poisson solve (9) by FFTW and
-// by hypre. Counters report nanoseconds per cell.
+// by hypre. Counters report nanoseconds per cell. Also the broad phase of contact detection
+// (cell list vs brute force) for N disks, per step.
 
+#include "fddem/contact/cell_list.hpp"
 #include "fddem/fluid/momentum.hpp"
 #include "fddem/fluid/pressure_correction.hpp"
 #include "fddem/grid/loops.hpp"
@@ -12,6 +14,8 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <random>
+#include <vector>
 
 namespace fddem {
 namespace {
@@ -96,6 +100,57 @@ void poisson(benchmark::State& state, const char* kind)
     per_cell(state, n);
     state.counters["iterations"] = solver->last_iterations();
 }
+
+/// N disks of diameter d scattered without overlap at area fraction 0.3 in a square box:
+/// pairs are searched within 1.5 d (contact at d, plus a margin as in a neighbour list).
+std::vector<Vec<2>> scattered_disks(int n, double d, double& box)
+{
+    box = std::sqrt(n * M_PI * d * d / 4.0 / 0.3);
+    std::mt19937 random(12345);
+    std::vector<Vec<2>> centres;
+    centres.reserve(static_cast<std::size_t>(n));
+    // A jittered square lattice: random, and no overlaps at this area fraction.
+    const int per_row = static_cast<int>(std::ceil(std::sqrt(n)));
+    const double pitch = box / per_row;
+    std::uniform_real_distribution<double> jitter(-0.5 * (pitch - d), 0.5 * (pitch - d));
+    for (int k = 0; k < n; ++k) {
+        const double x = (k % per_row + 0.5) * pitch + jitter(random);
+        const double y = (k / per_row + 0.5) * pitch + jitter(random);
+        centres.emplace_back(x, y);
+    }
+    return centres;
+}
+
+void contact_pairs(benchmark::State& state, bool is_brute_force)
+{
+    const int n = static_cast<int>(state.range(0));
+    const double d = 0.01;
+    double box = 0.0;
+    const std::vector<Vec<2>> centres = scattered_disks(n, d, box);
+    CellList<2> cells(Vec<2>::Zero(), Vec<2>(box, box), 1.5 * d);
+    std::vector<std::pair<int, int>> pairs;
+    for (auto _ : state) {
+        if (is_brute_force) {
+            pairs = brute_force_pairs<2>(centres, 1.5 * d);
+        } else {
+            cells.find_pairs(centres, pairs);
+        }
+        benchmark::DoNotOptimize(pairs.data());
+    }
+    state.counters["pairs"] = static_cast<double>(pairs.size());
+    state.counters["ns_per_disk"] = benchmark::Counter(
+        static_cast<double>(n) * 1e-9,
+        benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+BENCHMARK_CAPTURE(contact_pairs, cell_list, false)
+    ->RangeMultiplier(10)
+    ->Range(1000, 100000)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(contact_pairs, brute_force, true)
+    ->RangeMultiplier(10)
+    ->Range(1000, 10000)
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK(momentum_assembly)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond);
 BENCHMARK(momentum_sweep)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond);

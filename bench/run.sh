@@ -7,19 +7,26 @@
 #  3. with --openfoam: the side-by-side comparison with OpenFOAM's icoFoam on the same cavity
 #     (Re 100, N², Δt = 0.5/N, t = 20) using shared/peers/openfoam-cavity/run.sh, printing the
 #     wall-time ratio and both codes' centreline deviation from Ghia et al. (1982).
-# Options: --openfoam [N] (default N = 256), --quick (smaller table), --threads T (default 1).
+#  4. with --paper: the paper's particle cases end to end (Fig. 5 disk in a box, Figs. 9-13
+#     eighteen disks, both at h = 1/64; the DKT benchmark): wall time, time per step, outer
+#     iterations per step, share of time in fluid, coupling and contact, largest overlap.
+# The kernel table includes contact detection (cell list vs brute force) for 1e3-1e5 disks.
+# Options: --openfoam [N] (default N = 256), --paper, --quick (smaller table), --threads T
+# (default 1).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
 cd "$root"
 openfoam=0
 openfoam_n=256
+paper=0
 quick=0
 threads=1
 while [ $# -gt 0 ]; do
     case "$1" in
         --openfoam) openfoam=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then openfoam_n="$2"; shift; fi ;;
         --quick) quick=1 ;;
+        --paper) paper=1 ;;
         --threads) threads="$2"; shift ;;
         *) echo "bench/run.sh: unknown option '$1'" >&2; exit 2 ;;
     esac
@@ -37,7 +44,7 @@ mkdir -p "$out"
 
 echo "== kernels (OMP_NUM_THREADS=$threads)"
 "$root/build/release/bench/fddem_bench" --benchmark_min_time=0.2 2>/dev/null |
-    grep -E '^(Benchmark|-|momentum|poisson)'
+    grep -E '^(Benchmark|-|momentum|poisson|contact)'
 
 echo
 echo "== lid-driven cavity, Re 100, dt = 0.5/N (OMP_NUM_THREADS=$threads)"
@@ -74,4 +81,19 @@ if [ "$openfoam" = 1 ]; then
     (cd "$peer" && OMP_NUM_THREADS=1 ./run.sh "$n" 100 20 icoFoam >/dev/null)
     $python "$here/table.py" openfoam "$dir" "$fddem_wall" "$peer/results" "$n" \
         "$root/cases/verification/cavity_re100/reference"
+fi
+
+if [ "$paper" = 1 ]; then
+    echo
+    echo "== the paper's particle cases end to end (OMP_NUM_THREADS=$threads)"
+    rows=()
+    for entry in fig05_disk_in_box:cases/paper/fig05_disk_in_box \
+                 fig09_eighteen_disks:cases/paper/fig09_eighteen_disks \
+                 dkt_two_disks:cases/benchmarks/dkt_two_disks; do
+        name="${entry%%:*}"
+        dir="$out/$name"
+        "$fddem" run "${entry#*:}/case.toml" -o "$dir" --force -q --set "output.field_interval=0"
+        rows+=("$name:$dir")
+    done
+    $python "$here/table.py" paper "${rows[@]}"
 fi

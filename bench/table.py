@@ -40,6 +40,30 @@ def cavity_table(entries):
         )
 
 
+def paper_table(entries):
+    """End-to-end timing of particle cases: wall time, per step, outer iterations, phase shares."""
+    print(
+        f"{'case':<24} {'steps':>6} {'wall s':>8} {'ms/step':>8} {'outer/step':>10} "
+        f"{'fluid %':>8} {'coupling %':>10} {'contact %':>9} {'max overlap/r':>13}"
+    )
+    for entry in entries:
+        name, run_dir = entry.split(":", 1)
+        rows = read_solver_csv(run_dir)
+        summary = read_summary(run_dir)
+        steps = len(rows)
+        phases = summary["wall_seconds_by_phase"]
+        stepping = summary["wall_seconds_stepping"]
+        outer = sum(int(r["outer_iterations"]) for r in rows)
+        fluid = phases.get("momentum", 0) + phases.get("pressure", 0)
+        print(
+            f"{name:<24} {steps:>6} {stepping:>8.2f} {1e3 * stepping / steps:>8.2f} "
+            f"{outer / steps:>10.2f} {100 * fluid / stepping:>8.1f} "
+            f"{100 * phases.get('coupling', 0) / stepping:>10.1f} "
+            f"{100 * phases.get('contact', 0) / stepping:>9.1f} "
+            f"{100 * summary.get('max_relative_overlap', 0):>12.2f}%"
+        )
+
+
 def read_xy(path, skip_header=True):
     rows = []
     with open(path) as f:
@@ -152,13 +176,15 @@ def ghia_table(run_dir, reference_dir):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("mode", choices=["cavity", "openfoam", "ghia"])
+    parser.add_argument("mode", choices=["cavity", "openfoam", "ghia", "paper"])
     parser.add_argument("args", nargs="+")
     options = parser.parse_args()
     if options.mode == "cavity":
         cavity_table(options.args)
     elif options.mode == "ghia":
         ghia_table(*options.args)
+    elif options.mode == "paper":
+        paper_table(options.args)
     else:
         openfoam_table(*options.args)
     return 0
