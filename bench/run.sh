@@ -57,7 +57,8 @@ for n in $grids; do
     dt=$($python -c "print(0.5/$n)")
     "$fddem" run cases/verification/cavity_re100/case.toml -o "$dir" --force -q \
         --set "domain.cells=[$n,$n]" --set "time.dt=$dt" --set "time.end=$end" \
-        --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" --set "simple.tolerance=1e-4"
+        --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" --set "simple.tolerance=1e-4" \
+        --set 'simple.fft_planning="measure"'
     rows+=("$n:$dir")
 done
 $python "$here/table.py" cavity "${rows[@]}"
@@ -76,7 +77,8 @@ if [ "$openfoam" = 1 ]; then
     start=$(date +%s.%N)
     "$fddem" run cases/verification/cavity_re100/case.toml -o "$dir" --force -q \
         --set "domain.cells=[$n,$n]" --set "time.dt=$dt" --set "time.end=20.0" \
-        --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" --set "simple.tolerance=1e-4"
+        --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" --set "simple.tolerance=1e-4" \
+        --set 'simple.fft_planning="measure"'
     fddem_wall=$($python -c "import sys,time; print(f'{time.time()-float(sys.argv[1]):.2f}')" "$start")
     (cd "$peer" && OMP_NUM_THREADS=1 ./run.sh "$n" 100 20 icoFoam >/dev/null)
     $python "$here/table.py" openfoam "$dir" "$fddem_wall" "$peer/results" "$n" \

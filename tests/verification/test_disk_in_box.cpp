@@ -7,10 +7,10 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <string>
+
+#include "support/track_bodies.hpp"
 
 namespace fddem {
 namespace {
@@ -18,42 +18,13 @@ namespace {
 const std::string fig05 =
     std::string(FDDEM_SOURCE_DIR) + "/cases/paper/fig05_disk_in_box/case.toml";
 
-struct Landing {
-    double first_contact = -1.0; ///< time of the first step with a contact
-    double max_relative_overlap = 0.0;
-    double max_speed = 0.0;
-    double rest_from = -1.0; ///< time from which |U| < 1e-3 at every step
-};
-
-Landing run_case(Simulation<2>& sim)
-{
-    Landing out;
-    StepReport report;
-    do {
-        report = sim.advance();
-        const RigidBody<2>& body = sim.bodies().front();
-        const double t = sim.clock().time;
-        if (report.max_overlap > 0.0 && out.first_contact < 0.0) {
-            out.first_contact = t;
-        }
-        out.max_relative_overlap = std::max(out.max_relative_overlap, report.max_relative_overlap);
-        out.max_speed = std::max(out.max_speed, body.velocity.norm());
-        if (body.velocity.norm() >= 1e-3) {
-            out.rest_from = -1.0;
-        } else if (out.rest_from < 0.0) {
-            out.rest_from = t;
-        }
-    } while (!sim.is_finished(report));
-    return out;
-}
-
 TEST(DiskInBox, FallsLandsAndComesToRestOnTheFloor)
 {
     // Fig. 5 case (k = 1e7, restitution 0.3, β = 2, paper coupling) at h = 1/32, N_a = 3.
     CaseConfig config = read_case(fig05, {"domain.cells=[64,192]", "time.end=1.2"});
     config.bodies.front().n_rings = 3;
     Simulation<2> sim(config);
-    const Landing landing = run_case(sim);
+    const test::BodyHistory landing = test::run_and_track(sim);
     const RigidBody<2>& body = sim.bodies().front();
     const double r = body.shape.radius();
     std::printf("max speed %.3f, first contact t = %.3f, at rest from t = %.3f, "

@@ -20,6 +20,7 @@ struct BodyCoupling {
     double fluid_second_moment = 0.0;       ///< Σ ΔV_l |r_l⊥|²
     Vec<Dim> velocity_n = Vec<Dim>::Zero(); ///< U^n
     AngularVec<Dim> omega_n{};              ///< ω^n
+    double forcing_change = 0.0;            ///< of the last λ update (rigid_coupling.hpp) [m/s]
     // The DEM sub-steps of this step (contact/dem_step.hpp):
     Vec<Dim> contact_force = Vec<Dim>::Zero();            ///< mean contact force [N]
     AngularVec<Dim> contact_torque = zero_angular<Dim>(); ///< mean contact torque [N·m]

@@ -49,6 +49,27 @@ double update_marker_force(const RigidVelocity<Dim>& motion, std::span<const Vec
     return defect;
 }
 
+template <int Dim>
+double forcing_change(std::span<const Vec<Dim>> offsets, std::span<const double> volumes,
+                      std::span<const Vec<Dim>> lambda, std::span<const Vec<Dim>> lambda_star,
+                      double dt, double volume, double radius)
+{
+    Vec<Dim> force = Vec<Dim>::Zero();
+    AngularVec<Dim> moment = zero_angular<Dim>();
+    for (std::size_t l = 0; l < offsets.size(); ++l) {
+        const Vec<Dim> change = volumes[l] * (lambda[l] - lambda_star[l]);
+        force += change;
+        moment += cross(offsets[l], change);
+    }
+    double spin = 0.0;
+    if constexpr (Dim == 2) {
+        spin = std::abs(moment);
+    } else {
+        spin = moment.norm();
+    }
+    return dt * (force.norm() + 2.0 * spin / radius) / volume;
+}
+
 template RigidVelocity<2> rigid_velocity<2>(const RigidUpdateInput<2>&, std::span<const Vec<2>>,
                                             std::span<const double>, std::span<const Vec<2>>,
                                             std::span<const Vec<2>>);
@@ -61,5 +82,11 @@ template double update_marker_force<2>(const RigidVelocity<2>&, std::span<const 
 template double update_marker_force<3>(const RigidVelocity<3>&, std::span<const Vec<3>>,
                                        std::span<const Vec<3>>, std::span<const Vec<3>>, double,
                                        std::span<Vec<3>>);
+template double forcing_change<2>(std::span<const Vec<2>>, std::span<const double>,
+                                  std::span<const Vec<2>>, std::span<const Vec<2>>, double, double,
+                                  double);
+template double forcing_change<3>(std::span<const Vec<3>>, std::span<const double>,
+                                  std::span<const Vec<3>>, std::span<const Vec<3>>, double, double,
+                                  double);
 
 } // namespace fddem

@@ -59,4 +59,13 @@ double update_marker_force(const RigidVelocity<Dim>& motion, std::span<const Vec
                            std::span<const Vec<Dim>> lambda_star, double dt,
                            std::span<Vec<Dim>> lambda);
 
+/// How much the last λ update changed the force on a body, as the velocity change it would
+/// give a body of fluid density in one step: Δt (|Σ ΔV_l δλ_l| + 2 |Σ ΔV_l r_l × δλ_l| / r) / V
+/// with δλ = λ − λ* (the rotational part taken at the rim, r the radius). The convergence
+/// measure of a prescribed or fixed body, whose velocity does not change [m/s].
+template <int Dim>
+double forcing_change(std::span<const Vec<Dim>> offsets, std::span<const double> volumes,
+                      std::span<const Vec<Dim>> lambda, std::span<const Vec<Dim>> lambda_star,
+                      double dt, double volume, double radius);
+
 } // namespace fddem

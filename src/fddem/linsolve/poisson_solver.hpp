@@ -40,7 +40,7 @@ struct PoissonSettings {
     /// FFT plans by measurement (FFTW_MEASURE: ≈ 1.7× faster transforms at 256², but the plan
     /// FFTW picks may differ between processes, and with it the last bits of the answer) or by
     /// estimate (FFTW_ESTIMATE: the same plan, so bit-identical reruns).
-    bool is_fft_measured = true;
+    bool is_fft_measured = false;
 };
 
 /// Builds the solver named in `settings` for a grid whose axes are periodic where

@@ -63,10 +63,10 @@ struct CaseConfig {
     double velocity_relaxation = 1.0;
     double pressure_relaxation = 1.0;
     int momentum_sweeps = 4;
-    std::string convection = "central";   ///< "central" (deferred correction) or "upwind"
-    std::string pressure_solver = "auto"; ///< "auto", "fft" or "hypre"
-    std::string fft_planning = "measure"; ///< "measure" or "estimate"
-    double linear_tolerance = 1e-10;      ///< hypre relative residual tolerance
+    std::string convection = "central";    ///< "central" (deferred correction) or "upwind"
+    std::string pressure_solver = "auto";  ///< "auto", "fft" or "hypre"
+    std::string fft_planning = "estimate"; ///< "estimate" or "measure"
+    double linear_tolerance = 1e-10;       ///< hypre relative residual tolerance
     int linear_max_iterations = 200;
 
     // [[bodies]], [coupling]

@@ -90,10 +90,10 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
     for (int a = 0; a < Dim; ++a) {
         systems_.emplace_back(grid_);
     }
-    poisson_ =
-        make_poisson_solver<Dim>(grid_, bc_.is_periodic,
-                                 PoissonSettings{config.pressure_solver, config.linear_tolerance,
-                                                 config.linear_max_iterations});
+    poisson_ = make_poisson_solver<Dim>(
+        grid_, bc_.is_periodic,
+        PoissonSettings{config.pressure_solver, config.linear_tolerance,
+                        config.linear_max_iterations, config.fft_planning == "measure"});
     clock_.dt = config.dt;
     Vec<Dim> force = Vec<Dim>::Zero();
     for (int a = 0; a < Dim && static_cast<std::size_t>(a) < config.body_force.size(); ++a) {
@@ -257,6 +257,9 @@ double Simulation<Dim>::update_bodies(double dt)
                 defect = std::max(defect, update_marker_force<Dim>(motion, c.offsets, c.fluid,
                                                                    c.lambda_star, dt,
                                                                    c.lambda)); // eq. (15)
+                c.forcing_change =
+                    forcing_change<Dim>(c.offsets, c.markers.volumes, c.lambda, c.lambda_star, dt,
+                                        body.volume(), body.shape.radius());
                 for (std::size_t l = 0; l < c.markers.size(); ++l) {
                     // eq. (16): u ← u + Δt D(λ − λ*)
                     spread_vector<Dim, Kernel>(grid_, state_.u, c.positions[l],
@@ -457,10 +460,13 @@ StepReport Simulation<Dim>::advance()
                 } else {
                     spin = (bodies_[b].omega - previous_omega[b]).norm();
                 }
-                body_change =
-                    std::max(body_change, ((bodies_[b].velocity - previous_velocity[b]).norm() +
-                                           spin * bodies_[b].shape.radius()) /
-                                              scale);
+                // A free body converges on its velocity; a prescribed or fixed one, whose
+                // velocity is given, on the force the fluid puts on it.
+                const double change = bodies_[b].motion == Motion::free
+                                          ? (bodies_[b].velocity - previous_velocity[b]).norm() +
+                                                spin * bodies_[b].shape.radius()
+                                          : couplings_[b].forcing_change;
+                body_change = std::max(body_change, change / scale);
             }
             report.body_change = body_change;
             spread_marker_forces(); // the momentum source of the next iteration: ρf D(λ*)
