@@ -90,10 +90,10 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
     for (int a = 0; a < Dim; ++a) {
         systems_.emplace_back(grid_);
     }
-    poisson_ =
-        make_poisson_solver<Dim>(grid_, bc_.is_periodic,
-                                 PoissonSettings{config.pressure_solver, config.linear_tolerance,
-                                                 config.linear_max_iterations});
+    poisson_ = make_poisson_solver<Dim>(
+        grid_, bc_.is_periodic,
+        PoissonSettings{config.pressure_solver, config.linear_tolerance,
+                        config.linear_max_iterations, config.fft_planning != "estimate"});
     clock_.dt = config.dt;
     Vec<Dim> force = Vec<Dim>::Zero();
     for (int a = 0; a < Dim && static_cast<std::size_t>(a) < config.body_force.size(); ++a) {
@@ -496,6 +496,34 @@ StepReport Simulation<Dim>::advance()
     clock_.time += dt;
     ++clock_.step;
     return report;
+}
+
+template <int Dim>
+void Simulation<Dim>::check_body_count(std::size_t stored, std::size_t bodies)
+{
+    if (stored != bodies) {
+        throw InputError("", 0, "bodies",
+                         "the checkpoint holds " + std::to_string(stored) + " bodies, the case " +
+                             std::to_string(bodies));
+    }
+}
+
+template <int Dim>
+void Simulation<Dim>::finish_load()
+{
+    for (const BodyCoupling<Dim>& c : couplings_) {
+        const std::size_t n = c.markers.size();
+        for (const auto* values : {&c.offsets, &c.positions, &c.fluid, &c.lambda, &c.lambda_star}) {
+            if (values->size() != n) {
+                throw InputError("", 0, "bodies.n_rings",
+                                 "the checkpoint's bodies have other markers than the case's");
+            }
+        }
+    }
+    if (clock_.dt != config_.dt) {
+        clock_.dt = config_.dt;
+        is_reusable_assembly_ = false; // its coefficients hold the old ρ ΔV / Δt
+    }
 }
 
 template <int Dim>
