@@ -7,15 +7,19 @@
 
 namespace fddem::app {
 
-/// Exit statuses: 0 success, 1 internal error, 2 bad input, 3 numerical failure.
+/// Exit statuses: 0 success, 1 internal error, 2 bad input, 3 numerical failure, 128 + the
+/// signal number (130 SIGINT, 143 SIGTERM, the shells' convention) when a signal stopped the
+/// run after a checkpoint.
 inline constexpr int exit_success = 0;
 inline constexpr int exit_internal_error = 1;
 inline constexpr int exit_bad_input = 2;
 inline constexpr int exit_numerical_failure = 3;
+inline constexpr int exit_interrupted_base = 128;
 
 struct RunOptions {
-    std::string case_file;
-    std::string output_directory; ///< empty: from the case, or runs/<case stem>
+    std::string case_file;         ///< empty with restart_directory
+    std::string restart_directory; ///< --restart: continue this run directory
+    std::string output_directory;  ///< empty: from the case, or runs/<case stem>
     std::vector<std::string> overrides;
     bool force = false;
     bool quiet = false;

@@ -38,13 +38,22 @@ int main(int argc, char** argv)
 
     RunOptions run;
     CLI::App* run_cmd = app.add_subcommand("run", "Run a case file");
-    run_cmd->add_option("case", run.case_file, "Case file (TOML)")->required();
-    run_cmd->add_option(
+    CLI::Option* case_option = run_cmd->add_option("case", run.case_file, "Case file (TOML)");
+    CLI::Option* output_option = run_cmd->add_option(
         "-o,--output", run.output_directory,
         "Run directory (default: the case's output.directory, or runs/<case name>)");
     run_cmd->add_option("--set", run.overrides,
                         "Override a case key, section.key=value (repeatable)");
-    run_cmd->add_flag("--force", run.force, "Overwrite an existing run directory");
+    CLI::Option* force_option =
+        run_cmd->add_flag("--force", run.force, "Overwrite an existing run directory");
+    run_cmd
+        ->add_option("--restart", run.restart_directory,
+                     "Continue the run in RUN_DIR from its newest usable checkpoint, with its "
+                     "case.toml (and any --set overrides)")
+        ->option_text("RUN_DIR")
+        ->excludes(case_option)
+        ->excludes(output_option)
+        ->excludes(force_option);
     run_cmd->add_flag("-q,--quiet", run.quiet, "No progress output");
 
     bool keys = false;
@@ -64,6 +73,11 @@ int main(int argc, char** argv)
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "fddem: command line: %s (see fddem --help)\n", e.what());
+        return exit_bad_input;
+    }
+    if (*run_cmd && run.case_file.empty() && run.restart_directory.empty()) {
+        std::fprintf(stderr, "fddem: command line: run needs a case file or --restart RUN_DIR "
+                             "(see fddem run --help)\n");
         return exit_bad_input;
     }
 

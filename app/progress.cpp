@@ -23,15 +23,21 @@ std::string Progress::clock_text(double seconds)
     return text;
 }
 
+void Progress::resume_from(long step, double time)
+{
+    first_step_ = step;
+    first_time_ = time;
+}
+
 void Progress::update(long step, double time, int outer_iterations)
 {
     const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - start_).count();
-    const double rate = elapsed > 0.0 ? static_cast<double>(step) / elapsed : 0.0;
+    const double rate = elapsed > 0.0 ? static_cast<double>(step - first_step_) / elapsed : 0.0;
     std::string eta = "-";
     std::string percent;
-    if (end_time_ && time > 0.0) {
-        eta = clock_text(elapsed * (*end_time_ - time) / time);
+    if (end_time_ && time > first_time_) {
+        eta = clock_text(elapsed * (*end_time_ - time) / (time - first_time_));
         char p[16];
         std::snprintf(p, sizeof p, " (%5.1f %%)", 100.0 * time / *end_time_);
         percent = p;

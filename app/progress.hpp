@@ -13,6 +13,8 @@ class Progress {
 public:
     Progress(std::FILE* stream, bool is_terminal, long log_interval,
              std::optional<double> end_time);
+    /// Counts rate and ETA from this step and time (a restarted run), not from 0.
+    void resume_from(long step, double time);
     /// Called after every step.
     void update(long step, double time, int outer_iterations);
     /// Ends the status line (terminal) before other messages are printed.
@@ -31,6 +33,8 @@ private:
     std::chrono::steady_clock::time_point start_;
     std::chrono::steady_clock::time_point last_draw_;
     bool has_line_ = false;
+    long first_step_ = 0;
+    double first_time_ = 0.0; ///< [s]
 };
 
 } // namespace fddem::app

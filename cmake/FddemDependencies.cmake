@@ -4,6 +4,7 @@ find_package(tomlplusplus REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(fmt REQUIRED)
 find_package(MPI REQUIRED COMPONENTS C)
+find_package(ZLIB REQUIRED) # CRC-32 of checkpoint files
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 

@@ -6,7 +6,7 @@ packages=(
     build-essential cmake ninja-build pkg-config git
     clang-format clang-tidy
     libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
-    libfftw3-dev libhypre-dev libopenmpi-dev openmpi-bin
+    libfftw3-dev libhypre-dev libopenmpi-dev openmpi-bin zlib1g-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     python3 python3-numpy python3-matplotlib
 )

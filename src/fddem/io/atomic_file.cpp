@@ -2,6 +2,7 @@
 #include "fddem/io/atomic_file.hpp"
 
 #include <cstdio>
+#include <fcntl.h>
 #include <string>
 #include <system_error>
 #include <unistd.h>
@@ -30,6 +31,18 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
         std::filesystem::remove(temporary, error);
         throw OutputError("cannot rename " + temporary.string() + " to " + path.string());
     }
+}
+
+bool sync_directory(const std::filesystem::path& directory) noexcept
+{
+    const char* name = directory.empty() ? "." : directory.c_str();
+    const int fd = ::open(name, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) {
+        return false;
+    }
+    const bool is_synced = ::fsync(fd) == 0;
+    ::close(fd);
+    return is_synced;
 }
 
 } // namespace fddem

@@ -18,4 +18,9 @@ public:
 /// Writes `content` to `path` atomically. Throws OutputError on failure; `path` is untouched.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
+/// Flushes a directory's entries (a rename into it) to disk, so that a file renamed into place
+/// survives a crash of the machine, not only of the process. Best effort: false if the file
+/// system refuses (some do for directories; the rename itself is atomic regardless).
+bool sync_directory(const std::filesystem::path& directory) noexcept;
+
 } // namespace fddem

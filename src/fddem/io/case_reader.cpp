@@ -495,6 +495,9 @@ private:
         c.field_interval = real("output", "field_interval");
         c.log_interval = integer("output", "log_interval");
         c.particle_interval = real("output", "particle_interval");
+        c.checkpoint_step_interval = integer("checkpoint", "step_interval");
+        c.checkpoint_time_interval = real("checkpoint", "time_interval");
+        c.checkpoint_keep = static_cast<int>(integer("checkpoint", "keep"));
         c.kernel = text("coupling", "kernel");
         c.marker_spacing_ratio = real("coupling", "marker_spacing_ratio");
         if (node("nondimensional", "reynolds") != nullptr) {

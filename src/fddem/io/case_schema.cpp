@@ -247,6 +247,19 @@ std::vector<KeySpec> case_schema()
     s.push_back(ranged(key("output.lines", "points", T::integer, none, "101",
                            "Number of equally spaced sample points, ends included."),
                        2, 1000000, false, false));
+
+    s.push_back(ranged(key("checkpoint", "step_interval", T::integer, none, "1000",
+                           "Steps between checkpoints (RUN_DIR/checkpoints/, for `fddem run "
+                           "--restart`); 0: none by step count. A checkpoint is also written at "
+                           "the end and on SIGINT/SIGTERM."),
+                       0, inf, false, false));
+    s.push_back(ranged(key("checkpoint", "time_interval", T::real, "s", "0",
+                           "Simulated time between checkpoints; 0: none by time."),
+                       0.0, inf, false, false));
+    s.push_back(ranged(key("checkpoint", "keep", T::integer, none, "2",
+                           "Checkpoints kept: after writing one, all but the newest this many "
+                           "are removed."),
+                       1, 1000000, false, false));
     return s;
 }
 

@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/io/csv_history.hpp"
 
+#include "fddem/core/errors.hpp"
 #include "fddem/io/atomic_file.hpp"
 
 #include <fmt/format.h>
+
+#include <fstream>
+#include <system_error>
+#include <unistd.h>
 
 namespace fddem {
 namespace {
@@ -38,9 +43,17 @@ CsvHistory::CsvHistory(const std::filesystem::path& path, const std::vector<std:
     if (file_ == nullptr) {
         throw OutputError("cannot create " + path.string());
     }
-    const std::string header = header_line(columns);
-    if (std::fputs(header.c_str(), file_) < 0 || std::fflush(file_) != 0) {
-        throw OutputError("cannot write " + path.string());
+    write(header_line(columns));
+}
+
+CsvHistory::CsvHistory(const std::filesystem::path& path, const std::vector<std::string>& columns,
+                       Continue /*tag*/)
+    : path_(path), file_(std::fopen(path.c_str(), "ab")), n_columns_(columns.size())
+{
+    std::error_code error;
+    size_ = std::filesystem::file_size(path, error);
+    if (file_ == nullptr || error) {
+        throw OutputError("cannot append to " + path.string());
     }
 }
 
@@ -62,9 +75,62 @@ void CsvHistory::append(const std::vector<double>& values)
         throw OutputError(fmt::format("{}: a row of {} values for {} columns", path_.string(),
                                       values.size(), n_columns_));
     }
-    const std::string line = row_line(values);
-    if (std::fputs(line.c_str(), file_) < 0 || std::fflush(file_) != 0) {
+    write(row_line(values));
+}
+
+void CsvHistory::write(const std::string& text)
+{
+    if (std::fputs(text.c_str(), file_) < 0 || std::fflush(file_) != 0) {
         throw OutputError("cannot write " + path_.string() + " (disk full?)");
+    }
+    size_ += text.size();
+}
+
+void CsvHistory::sync()
+{
+    if (std::fflush(file_) != 0 || ::fsync(::fileno(file_)) != 0) {
+        throw OutputError("cannot sync " + path_.string());
+    }
+}
+
+void check_history(const std::filesystem::path& path, const std::vector<std::string>& columns,
+                   std::uint64_t bytes)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw InputError(path.string(), 0, "", "missing: the run directory is incomplete");
+    }
+    const std::string header = header_line(columns);
+    std::string first;
+    std::getline(in, first);
+    if (first + "\n" != header) {
+        throw InputError(path.string(), 1, "",
+                         "the header is not fddem's for this case (" +
+                             std::to_string(columns.size()) + " columns expected)");
+    }
+    std::error_code error;
+    const std::uint64_t size = std::filesystem::file_size(path, error);
+    if (error || size < bytes || bytes < header.size()) {
+        throw InputError(path.string(), 0, "",
+                         fmt::format("{} bytes, shorter than the {} the checkpoint records: the "
+                                     "file was cut or replaced",
+                                     size, bytes));
+    }
+    in.seekg(static_cast<std::streamoff>(bytes - 1));
+    if (in.get() != '\n') {
+        throw InputError(path.string(), 0, "",
+                         fmt::format("byte {} is not the end of a row, as the checkpoint "
+                                     "records: the file was changed",
+                                     bytes));
+    }
+}
+
+void truncate_history(const std::filesystem::path& path, std::uint64_t bytes)
+{
+    std::error_code error;
+    std::filesystem::resize_file(path, bytes, error);
+    if (error) {
+        throw OutputError("cannot truncate " + path.string() + ": " + error.message());
     }
 }
 

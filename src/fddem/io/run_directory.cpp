@@ -2,7 +2,9 @@
 #include "fddem/io/run_directory.hpp"
 
 #include "fddem/core/errors.hpp"
+#include "fddem/io/atomic_file.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <system_error>
 #include <unistd.h>
@@ -42,6 +44,34 @@ void prepare_run_directory(const std::filesystem::path& directory, bool force)
     }
     std::fclose(file);
     fs::remove(probe, error);
+}
+
+int remove_unlisted_files(const std::filesystem::path& directory, const std::string& folder,
+                          const std::string& extension,
+                          const std::vector<std::pair<double, std::string>>& listed)
+{
+    namespace fs = std::filesystem;
+    std::error_code error;
+    if (!fs::is_directory(directory / folder, error)) {
+        return 0;
+    }
+    std::vector<fs::path> unlisted;
+    for (const auto& file : fs::directory_iterator(directory / folder, error)) {
+        const std::string relative = folder + "/" + file.path().filename().string();
+        const bool is_listed = std::any_of(listed.begin(), listed.end(), [&](const auto& entry) {
+            return entry.second == relative;
+        });
+        if (relative.ends_with(extension) && !is_listed) {
+            unlisted.push_back(file.path());
+        }
+    }
+    for (const fs::path& path : unlisted) {
+        fs::remove(path, error);
+        if (error) {
+            throw OutputError("cannot remove " + path.string() + ": " + error.message());
+        }
+    }
+    return static_cast<int>(unlisted.size());
 }
 
 } // namespace fddem

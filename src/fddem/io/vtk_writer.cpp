@@ -182,6 +182,17 @@ void write_vtp(const std::filesystem::path& path, const std::vector<std::array<d
 void PvdCollection::add(double time, const std::string& relative_file)
 {
     entries_.emplace_back(time, relative_file);
+    write();
+}
+
+void PvdCollection::assign(std::vector<std::pair<double, std::string>> entries)
+{
+    entries_ = std::move(entries);
+    write();
+}
+
+void PvdCollection::write() const
+{
     std::string text = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\">\n"
                        "  <Collection>\n";
     for (const auto& [t, file] : entries_) {

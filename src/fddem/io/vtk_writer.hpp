@@ -32,12 +32,16 @@ class PvdCollection {
 public:
     explicit PvdCollection(std::filesystem::path path) : path_(std::move(path)) {}
     void add(double time, const std::string& relative_file);
+    /// Replaces the entries (a restarted run: those of its checkpoint) and rewrites the file.
+    void assign(std::vector<std::pair<double, std::string>> entries);
     [[nodiscard]] const std::vector<std::pair<double, std::string>>& entries() const noexcept
     {
         return entries_;
     }
 
 private:
+    void write() const;
+
     std::filesystem::path path_;
     std::vector<std::pair<double, std::string>> entries_;
 };

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace fddem {
@@ -28,12 +29,16 @@ public:
     void solve(const CellField<Dim>& rhs, CellField<Dim>& phi) override;
     [[nodiscard]] std::string name() const override { return "FFTW direct"; }
     [[nodiscard]] int last_iterations() const override { return 1; }
+    /// FFTW's wisdom: the plans this process measured (empty for estimated plans, which are the
+    /// same in every process).
+    [[nodiscard]] std::string plan_record() const override;
+    /// Imports the wisdom and replans: the measured plans of the recording process come back.
+    void restore_plans(const std::string& record) override;
 
 private:
-    struct Plans; // FFTW plan handles, kept out of the header
+    struct Plans; // FFTW plan handles and their SIMD-aligned work array, kept out of the header
 
     MacGrid<Dim> grid_;
-    std::vector<double> work_;          ///< the owned cells, x fastest, contiguous
     std::vector<double> inverse_eigen_; ///< 1/λ per mode (0 for the constant mode) × normalisation
     std::unique_ptr<Plans> plans_;
 };

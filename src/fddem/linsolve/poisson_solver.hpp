@@ -31,6 +31,13 @@ public:
     [[nodiscard]] virtual std::string name() const = 0;
     /// Iterations of the last solve (1 for a direct solver).
     [[nodiscard]] virtual int last_iterations() const = 0;
+
+    /// What another process needs to make the same plans, so that a run continued from a
+    /// checkpoint gives the same bits (measured FFT plans differ between processes); empty
+    /// when the solver has nothing of the kind.
+    [[nodiscard]] virtual std::string plan_record() const { return {}; }
+    /// Replans from another process's plan_record(); an empty record changes nothing.
+    virtual void restore_plans(const std::string& record) { static_cast<void>(record); }
 };
 
 struct PoissonSettings {

@@ -97,6 +97,11 @@ struct CaseConfig {
     double particle_interval = 0.0; ///< [s]; 0: particles.csv every step
     long log_interval = 100;        ///< steps between plain log lines (no terminal)
     std::vector<LineSample> lines;
+
+    // [checkpoint]
+    long checkpoint_step_interval = 1000;  ///< steps between checkpoints; 0: not by steps
+    double checkpoint_time_interval = 0.0; ///< [s]; 0: not by simulated time
+    int checkpoint_keep = 2;               ///< newest checkpoints kept
 };
 
 } // namespace fddem

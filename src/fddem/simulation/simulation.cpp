@@ -505,6 +505,34 @@ StepReport Simulation<Dim>::advance()
 }
 
 template <int Dim>
+void Simulation<Dim>::check_body_count(std::size_t stored, std::size_t bodies)
+{
+    if (stored != bodies) {
+        throw InputError("", 0, "bodies",
+                         "the checkpoint holds " + std::to_string(stored) + " bodies, the case " +
+                             std::to_string(bodies));
+    }
+}
+
+template <int Dim>
+void Simulation<Dim>::finish_load()
+{
+    for (const BodyCoupling<Dim>& c : couplings_) {
+        const std::size_t n = c.markers.size();
+        for (const auto* values : {&c.offsets, &c.positions, &c.fluid, &c.lambda, &c.lambda_star}) {
+            if (values->size() != n) {
+                throw InputError("", 0, "bodies.n_rings",
+                                 "the checkpoint's bodies have other markers than the case's");
+            }
+        }
+    }
+    if (clock_.dt != config_.dt) {
+        clock_.dt = config_.dt;
+        is_reusable_assembly_ = false; // its coefficients hold the old ρ ΔV / Δt
+    }
+}
+
+template <int Dim>
 bool Simulation<Dim>::is_finished(const StepReport& last) const
 {
     if (clock_.step >= config_.max_steps) {

@@ -16,6 +16,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace fddem {
@@ -90,7 +91,93 @@ public:
     /// Sets a uniform force per unit volume on the fluid [N/m³] (e.g. to drive a channel).
     void set_uniform_body_force(const Vec<Dim>& force);
 
+    /// Writes everything the next steps depend on (io/checkpoint.hpp): see visit_state.
+    template <class Archive>
+    void save_state(Archive& archive) const
+    {
+        visit_state(*this, archive);
+    }
+    /// Reads what save_state wrote into a Simulation built from the same case (the grid and
+    /// the bodies' markers must match; io/checkpoint checks that first and names what differs),
+    /// after which advance() continues bit for bit as the saving run would have. A time.dt
+    /// changed since is adopted (the momentum systems are then reassembled).
+    template <class Archive>
+    void load_state(Archive& archive)
+    {
+        visit_state(*this, archive);
+        finish_load();
+    }
+
 private:
+    /// The state, one `archive(name, member)` per member in one fixed order, for writing (Self
+    /// const) and reading alike: a new member is one more line here (and a format version
+    /// bump in io/checkpoint.hpp). Work arrays that a step rewrites before reading them are
+    /// included where cheap, so that no stale value can make a continued run differ. Not here:
+    /// what the constructor rebuilds from the case (grid, markers in the body frame, solvers,
+    /// DEM settings) and per-step scratch (dem_bodies_, the cell list).
+    template <class Self, class Archive>
+    static void visit_state(Self& self, Archive& archive)
+    {
+        archive("clock.step", self.clock_.step);
+        archive("clock.time", self.clock_.time);
+        archive("clock.dt", self.clock_.dt);
+        archive("fluid.u", self.state_.u);
+        archive("fluid.u_n", self.state_.u_n);
+        archive("fluid.p", self.state_.p);
+        archive("fluid.p_corr", self.state_.p_corr); // hypre's initial guess (warm start)
+        archive("fluid.body_force", self.state_.body_force);
+        archive("fluid.divergence", self.state_.divergence);
+        archive("fluid.previous_level", self.previous_level_);
+        archive("uniform_force", self.uniform_force_);
+        archive("is_reusable_assembly", self.is_reusable_assembly_);
+        for (auto& system : self.systems_) {
+            archive("momentum.a_p", system.a_p);
+            archive("momentum.a_nb", system.a_nb);
+            archive("momentum.b", system.b);
+            archive("momentum.u_old", system.u_old);
+        }
+        std::size_t n_bodies = self.bodies_.size();
+        archive("bodies", n_bodies);
+        check_body_count(n_bodies, self.bodies_.size());
+        for (std::size_t b = 0; b < self.bodies_.size(); ++b) {
+            auto& body = self.bodies_[b];
+            archive("body.centre", body.centre);
+            archive("body.angle", body.angle);
+            archive("body.velocity", body.velocity);
+            archive("body.omega", body.omega);
+            archive("body.force", body.force);
+            archive("body.torque", body.torque);
+            auto& c = self.couplings_[b];
+            archive("coupling.offsets", c.offsets);
+            archive("coupling.positions", c.positions);
+            archive("coupling.fluid", c.fluid);
+            archive("coupling.lambda", c.lambda);
+            archive("coupling.lambda_star", c.lambda_star);
+            archive("coupling.velocity_n", c.velocity_n);
+            archive("coupling.omega_n", c.omega_n);
+            archive("contact.force", c.contact_force);
+            archive("contact.torque", c.contact_torque);
+            archive("contact.is_in_contact", c.is_in_contact);
+            archive("contact.dem_centre", c.dem_centre);
+            archive("contact.dem_velocity", c.dem_velocity);
+            archive("contact.dem_omega", c.dem_omega);
+        }
+        archive("seconds.coupling", self.coupling_seconds_);
+        archive("seconds.contact", self.contact_seconds_);
+        archive("seconds.momentum", self.momentum_seconds_);
+        archive("seconds.pressure", self.pressure_seconds_);
+        if constexpr (Archive::is_reading) {
+            std::string plans;
+            archive("pressure.plans", plans);
+            self.poisson_->restore_plans(plans);
+        } else {
+            archive("pressure.plans", self.poisson_->plan_record());
+        }
+    }
+    static void check_body_count(std::size_t stored, std::size_t bodies);
+    /// After load_state: the marker arrays fit the markers; the case's Δt is adopted.
+    void finish_load();
+
     [[nodiscard]] double reference_velocity() const;
     void place_markers();
     double update_bodies(double dt);

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: MIT
+// `fddem run --restart RUN_DIR`: restore the newest usable checkpoint, check that the outputs
+// hold what it records (all before anything is written), cut the outputs back to its step,
+// then continue with the shared time loop (app/run.cpp).
+
+#include "fddem/core/errors.hpp"
+#include "fddem/io/atomic_file.hpp"
+#include "fddem/io/case_changes.hpp"
+#include "fddem/io/checkpoint.hpp"
+#include "fddem/io/run_directory.hpp"
+
+#include <fmt/format.h>
+
+#include <optional>
+
+#include "run.hpp"
+
+namespace fddem::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Damaged {
+    fs::path path;
+    std::string reason;
+};
+
+/// Why the case ends where the checkpoint is, for the "nothing to do" message.
+std::string end_reason(const CaseConfig& config, const Clock& clock)
+{
+    if (clock.step >= config.max_steps) {
+        return fmt::format("time.max_steps = {}", config.max_steps);
+    }
+    if (config.end_time && clock.time >= *config.end_time - 0.5 * clock.dt) {
+        return fmt::format("time.end = {:g} s", *config.end_time);
+    }
+    return "the flow is steady (time.steady_tolerance)";
+}
+
+} // namespace
+
+template <int Dim>
+int Run<Dim>::resume(bool has_overrides)
+{
+    std::vector<Damaged> damaged;
+    std::optional<CheckpointEntry> used;
+    std::string checkpoint_case;
+    for (const CheckpointEntry& entry : list_checkpoints(directory_)) {
+        try {
+            const CheckpointFile file(entry.path);
+            file.restore(sim_, record_);
+            used = entry;
+            checkpoint_case = file.header().case_text;
+            break;
+        } catch (const CheckpointError& e) {
+            damaged.push_back({entry.path, e.what()});
+        }
+    }
+    if (!used) {
+        std::string reasons;
+        for (const Damaged& d : damaged) {
+            reasons += fmt::format("; {} {}", d.path.filename().string(), d.reason);
+        }
+        throw InputError(checkpoint_directory(directory_).string(), 0, "",
+                         damaged.empty() ? std::string("no checkpoint to restart from")
+                                         : "no usable checkpoint" + reasons);
+    }
+    const Clock& clock = sim_.clock();
+    if (sim_.is_finished(record_.last)) {
+        progress_.message(fmt::format(
+            "fddem: {} is complete: step {}, t = {:g} s is the end of its case ({}); nothing to "
+            "do. To run further: fddem run --restart {} --set time.end=…",
+            directory_.string(), clock.step, clock.time, end_reason(config_, clock),
+            directory_.string()));
+        return exit_success;
+    }
+    const fs::path solver_path = directory_ / "solver.csv";
+    const fs::path particles_path = directory_ / "particles.csv";
+    check_history(solver_path, solver_columns(), record_.solver_csv_bytes);
+    if (!sim_.bodies().empty()) {
+        check_history(particles_path, particle_columns(), record_.particles_csv_bytes);
+    }
+
+    // Nothing was written so far; from here on the run directory is brought back to the step.
+    for (const Damaged& d : damaged) {
+        fs::path aside = d.path;
+        aside += ".damaged";
+        fs::rename(d.path, aside);
+        progress_.message(fmt::format("fddem: checkpoint {} {}; set aside as {}", d.path.string(),
+                                      d.reason, aside.filename().string()));
+    }
+    progress_.message(fmt::format("fddem: restarting {} from step {} (t = {:g} s), {}",
+                                  directory_.string(), clock.step, clock.time,
+                                  used->path.filename().string()));
+    for (const std::string& change : case_changes(checkpoint_case, config_.as_run)) {
+        if (!change.starts_with("derived.")) {
+            progress_.message("fddem: changed since the checkpoint: " + change);
+        }
+    }
+    if (has_overrides) {
+        write_file_atomically(directory_ / "case.toml", config_.as_run);
+    }
+    for (const char* folder : {"", "fields", "particles", "samples", "checkpoints"}) {
+        remove_stale_temporaries(directory_ / folder);
+    }
+    truncate_history(solver_path, record_.solver_csv_bytes);
+    solver_ = std::make_unique<CsvHistory>(solver_path, solver_columns(), CsvHistory::Continue{});
+    pvd_.assign(record_.field_frames);
+    remove_unlisted_files(directory_, "fields", ".vtr", record_.field_frames);
+    if (!sim_.bodies().empty()) {
+        truncate_history(particles_path, record_.particles_csv_bytes);
+        particles_ = std::make_unique<CsvHistory>(particles_path, particle_columns(),
+                                                  CsvHistory::Continue{});
+        particles_pvd_.assign(record_.particle_frames);
+        remove_unlisted_files(directory_, "particles", ".vtp", record_.particle_frames);
+    }
+    ++record_.restarts;
+    last_checkpoint_ = used->path;
+    progress_.resume_from(clock.step, clock.time);
+    report_derived();
+    return step_to_end();
+}
+
+template int Run<2>::resume(bool);
+template int Run<3>::resume(bool);
+
+} // namespace fddem::app

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/io/checkpoint_files.hpp"
+
+#include "fddem/io/atomic_file.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <charconv>
+#include <optional>
+#include <string_view>
+#include <system_error>
+
+namespace fddem {
+namespace {
+
+constexpr std::string_view prefix = "checkpoint_";
+constexpr std::string_view extension = ".ckpt";
+
+/// The step in a checkpoint's file name, none if the name is not one.
+std::optional<long> step_of(const std::string& name)
+{
+    if (name.size() <= prefix.size() + extension.size() || !name.starts_with(prefix) ||
+        !name.ends_with(extension)) {
+        return std::nullopt;
+    }
+    const std::string_view digits(name.data() + prefix.size(),
+                                  name.size() - prefix.size() - extension.size());
+    if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+        return std::nullopt;
+    }
+    long step = 0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), step);
+    if (error != std::errc() || end != digits.data() + digits.size()) {
+        return std::nullopt;
+    }
+    return step;
+}
+
+} // namespace
+
+std::filesystem::path checkpoint_directory(const std::filesystem::path& run_directory)
+{
+    return run_directory / "checkpoints";
+}
+
+std::filesystem::path checkpoint_path(const std::filesystem::path& run_directory, long step)
+{
+    return checkpoint_directory(run_directory) /
+           fmt::format("{}{:010d}{}", prefix, step, extension);
+}
+
+std::vector<CheckpointEntry> list_checkpoints(const std::filesystem::path& run_directory)
+{
+    std::vector<CheckpointEntry> entries;
+    std::error_code error;
+    const std::filesystem::path directory = checkpoint_directory(run_directory);
+    if (!std::filesystem::is_directory(directory, error)) {
+        return entries;
+    }
+    for (const auto& file : std::filesystem::directory_iterator(directory, error)) {
+        if (const std::optional<long> step = step_of(file.path().filename().string());
+            step && file.is_regular_file(error)) {
+            entries.push_back({*step, file.path()});
+        }
+    }
+    std::sort(entries.begin(), entries.end(),
+              [](const CheckpointEntry& a, const CheckpointEntry& b) { return a.step > b.step; });
+    return entries;
+}
+
+void prune_checkpoints(const std::filesystem::path& run_directory, int keep)
+{
+    const std::vector<CheckpointEntry> entries = list_checkpoints(run_directory);
+    for (std::size_t k = static_cast<std::size_t>(std::max(keep, 1)); k < entries.size(); ++k) {
+        std::error_code error;
+        std::filesystem::remove(entries[k].path, error);
+        if (error) {
+            throw OutputError("cannot remove the old checkpoint " + entries[k].path.string() +
+                              ": " + error.message());
+        }
+    }
+}
+
+void remove_stale_temporaries(const std::filesystem::path& directory)
+{
+    std::error_code error;
+    if (!std::filesystem::is_directory(directory, error)) {
+        return;
+    }
+    std::vector<std::filesystem::path> stale;
+    for (const auto& file : std::filesystem::directory_iterator(directory, error)) {
+        if (file.path().filename().string().find(".tmp.") != std::string::npos) {
+            stale.push_back(file.path());
+        }
+    }
+    for (const auto& path : stale) {
+        std::filesystem::remove(path, error);
+    }
+}
+
+} // namespace fddem

@@ -1,0 +1,423 @@
+// SPDX-License-Identifier: MIT
+// Checkpoints: the encoding reads back exactly, the file refuses damage, truncation, other
+// formats and other grids by name, and a simulation restored from a checkpoint continues bit
+// for bit as the one that wrote it (2D with colliding disks, 3D with a sphere on the floor,
+// and a fluid-only cavity, whose steps reuse the momentum systems assembled by the last one).
+
+#include "fddem/core/errors.hpp"
+#include "fddem/io/case_reader.hpp"
+#include "fddem/io/checkpoint.hpp"
+#include "fddem/io/checkpoint_files.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <unistd.h>
+
+namespace fddem {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name)
+{
+    const fs::path dir = fs::temp_directory_path() /
+                         ("fddem_checkpoint_test_" + std::to_string(::getpid()) + "_" + name);
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::string read_bytes(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes)
+{
+    std::ofstream(path, std::ios::binary) << bytes;
+}
+
+TEST(Crc32, MatchesTheStandardCheckValue)
+{
+    // The CRC-32 (ISO-HDLC) check value of "123456789", as every CRC catalogue lists it.
+    EXPECT_EQ(crc32_of("123456789"), 0xCBF43926U);
+}
+
+TEST(CheckpointArchive, ValuesReadBackExactly)
+{
+    const double tiny = std::numeric_limits<double>::denorm_min();
+    ArchiveWriter writer;
+    writer("a", -0.0);
+    writer("b", tiny);
+    writer("c", -123456789012L);
+    writer("d", true);
+    writer("e", std::string("text with\nnewline"));
+    writer("f", Vec<3>(1.0 / 3.0, -2.5, 1e300));
+    writer("g", std::vector<std::pair<double, std::string>>{{0.1, "x"}, {0.2, "yy"}});
+    writer("h", std::map<int, double>{{3, 0.5}, {-1, 2.0}});
+
+    ArchiveReader reader(writer.bytes());
+    double a = 1.0;
+    double b = 0.0;
+    long c = 0;
+    bool d = false;
+    std::string e;
+    Vec<3> f = Vec<3>::Zero();
+    std::vector<std::pair<double, std::string>> g;
+    std::map<int, double> h;
+    reader("a", a);
+    reader("b", b);
+    reader("c", c);
+    reader("d", d);
+    reader("e", e);
+    reader("f", f);
+    reader("g", g);
+    reader("h", h);
+    EXPECT_TRUE(reader.is_at_end());
+    EXPECT_EQ(a, 0.0);
+    EXPECT_TRUE(std::signbit(a));
+    EXPECT_EQ(b, tiny);
+    EXPECT_EQ(c, -123456789012L);
+    EXPECT_TRUE(d);
+    EXPECT_EQ(e, "text with\nnewline");
+    EXPECT_EQ(f, Vec<3>(1.0 / 3.0, -2.5, 1e300));
+    ASSERT_EQ(g.size(), 2U);
+    EXPECT_EQ(g[1].first, 0.2);
+    EXPECT_EQ(g[1].second, "yy");
+    EXPECT_EQ(h.at(-1), 2.0);
+}
+
+/// A record of the kind a per-pair contact history would keep.
+struct PairSpring {
+    int first = 0;
+    int second = 0;
+    Vec<2> displacement = Vec<2>::Zero();
+
+    template <class Self, class Archive>
+    static void visit(Self& s, Archive& archive)
+    {
+        archive("pair.first", s.first);
+        archive("pair.second", s.second);
+        archive("pair.displacement", s.displacement);
+    }
+};
+
+TEST(CheckpointArchive, StructsThatListTheirMembersReadBack)
+{
+    const std::vector<PairSpring> springs = {{0, 2, Vec<2>(1e-6, -2e-7)}, {1, 2, Vec<2>(0.5, 0)}};
+    ArchiveWriter writer;
+    writer("springs", springs);
+    ArchiveReader reader(writer.bytes());
+    std::vector<PairSpring> read;
+    reader("springs", read);
+    ASSERT_EQ(read.size(), 2U);
+    EXPECT_EQ(read[0].second, 2);
+    EXPECT_EQ(read[0].displacement, springs[0].displacement);
+    EXPECT_EQ(read[1].first, 1);
+    EXPECT_TRUE(reader.is_at_end());
+}
+
+TEST(CheckpointArchive, OutOfStepReadingIsAnErrorNamingTheValue)
+{
+    ArchiveWriter writer;
+    writer("body.centre", Vec<2>(1.0, 2.0));
+    ArchiveReader reader(writer.bytes());
+    Vec<2> velocity;
+    try {
+        reader("body.velocity", velocity);
+        FAIL() << "no error";
+    } catch (const CheckpointError& e) {
+        EXPECT_NE(std::string(e.what()).find("'body.velocity'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("'body.centre'"), std::string::npos) << e.what();
+    }
+    ArchiveReader short_reader(std::string_view(writer.bytes()).substr(0, 20));
+    Vec<2> centre;
+    EXPECT_THROW(short_reader("body.centre", centre), CheckpointError);
+}
+
+/// Disks (2D) or a sphere (3D) dropped near each other and the floor. The 2D disks hit the
+/// floor at step 10 and each other and the floor at steps 21–22, the sphere rests on the floor
+/// from step 20 (checked below: the checkpoint catches contacts in flight).
+std::string falling_balls_case(int dim)
+{
+    if (dim == 2) {
+        return R"([domain]
+size = [1.0, 1.0]
+cells = [24, 24]
+[fluid]
+density = 1.0
+viscosity = 0.01
+gravity = [0.0, -9.81]
+[[bodies]]
+diameter = 0.25
+density = 4.0
+position = [0.45, 0.14]
+n_rings = 2
+[[bodies]]
+diameter = 0.25
+density = 4.0
+position = [0.52, 0.42]
+n_rings = 2
+[[bodies]]
+diameter = 0.25
+density = 4.0
+position = [0.8, 0.2]
+velocity = [-1.0, 0.0]
+n_rings = 2
+[contact]
+restitution = 0.5
+[time]
+dt = 0.01
+end = 1.0
+[simple]
+tolerance = 1e-3
+max_outer_iterations = 10
+fft_planning = "estimate"
+)";
+    }
+    return R"([domain]
+size = [1.0, 1.0, 1.0]
+cells = [10, 10, 10]
+[fluid]
+density = 1.0
+viscosity = 0.01
+gravity = [0.0, -9.81, 0.0]
+[[bodies]]
+shape = "sphere"
+diameter = 0.4
+density = 4.0
+position = [0.5, 0.22, 0.5]
+n_rings = 1
+[contact]
+restitution = 0.5
+[time]
+dt = 0.01
+end = 1.0
+[simple]
+tolerance = 1e-3
+max_outer_iterations = 10
+fft_planning = "estimate"
+)";
+}
+
+std::string cavity_case()
+{
+    return R"([domain]
+size = [1.0, 1.0]
+cells = [12, 12]
+[walls]
+y_high = [1.0, 0.0]
+[fluid]
+density = 1.0
+viscosity = 0.01
+[time]
+dt = 0.05
+end = 1.0
+)";
+}
+
+template <int Dim>
+void expect_same_state(const Simulation<Dim>& a, const Simulation<Dim>& b)
+{
+    EXPECT_EQ(a.clock().step, b.clock().step);
+    EXPECT_EQ(a.clock().time, b.clock().time);
+    for (int axis = 0; axis < Dim; ++axis) {
+        const auto u = a.fluid().u[axis].values();
+        const auto v = b.fluid().u[axis].values();
+        ASSERT_TRUE(std::equal(u.begin(), u.end(), v.begin())) << "u component " << axis;
+    }
+    const auto p = a.fluid().p.values();
+    const auto q = b.fluid().p.values();
+    ASSERT_TRUE(std::equal(p.begin(), p.end(), q.begin())) << "pressure";
+    ASSERT_EQ(a.bodies().size(), b.bodies().size());
+    for (std::size_t k = 0; k < a.bodies().size(); ++k) {
+        EXPECT_EQ(a.bodies()[k].centre, b.bodies()[k].centre) << "body " << k;
+        EXPECT_EQ(a.bodies()[k].velocity, b.bodies()[k].velocity) << "body " << k;
+        EXPECT_EQ(a.bodies()[k].omega, b.bodies()[k].omega) << "body " << k;
+        EXPECT_EQ(a.bodies()[k].force, b.bodies()[k].force) << "body " << k;
+        EXPECT_EQ(a.couplings()[k].lambda, b.couplings()[k].lambda) << "body " << k;
+    }
+}
+
+/// Runs `steps_before` steps, writes a checkpoint, runs `steps_after` more; a second
+/// simulation of the same case restored from the checkpoint runs `steps_after` steps too.
+/// Returns how many bodies were in contact at the checkpoint.
+template <int Dim>
+int expect_bit_identical_continuation(const CaseConfig& config, int steps_before, int steps_after)
+{
+    const fs::path dir = scratch("continuation" + std::to_string(Dim));
+    const fs::path file = dir / "state.ckpt";
+    Simulation<Dim> original(config);
+    for (int k = 0; k < steps_before; ++k) {
+        static_cast<void>(original.advance());
+    }
+    RunRecord record;
+    record.total_outer_iterations = 1234;
+    record.field_frames = {{0.0, "fields/fields_000000.vtr"}};
+    write_checkpoint(file, original, record);
+    int in_contact = 0;
+    for (const BodyCoupling<Dim>& c : original.couplings()) {
+        in_contact += c.is_in_contact ? 1 : 0;
+    }
+    for (int k = 0; k < steps_after; ++k) {
+        static_cast<void>(original.advance());
+    }
+
+    Simulation<Dim> restored(config);
+    RunRecord restored_record;
+    const CheckpointFile checkpoint(file);
+    EXPECT_EQ(checkpoint.header().step, steps_before);
+    EXPECT_EQ(checkpoint.header().case_text, config.as_run);
+    checkpoint.restore(restored, restored_record);
+    EXPECT_EQ(restored_record.total_outer_iterations, 1234);
+    EXPECT_EQ(restored_record.field_frames, record.field_frames);
+    for (int k = 0; k < steps_after; ++k) {
+        static_cast<void>(restored.advance());
+    }
+    expect_same_state(original, restored);
+    fs::remove_all(dir);
+    return in_contact;
+}
+
+TEST(CheckpointRestart, DisksInContactContinueBitForBit2D)
+{
+    const CaseConfig config = read_case_string(falling_balls_case(2), "test:disks");
+    const int in_contact = expect_bit_identical_continuation<2>(config, 21, 8);
+    EXPECT_GT(in_contact, 0) << "the checkpoint should catch a contact in flight";
+}
+
+TEST(CheckpointRestart, SphereOnTheFloorContinuesBitForBit3D)
+{
+    const CaseConfig config = read_case_string(falling_balls_case(3), "test:sphere");
+    const int in_contact = expect_bit_identical_continuation<3>(config, 20, 4);
+    EXPECT_GT(in_contact, 0) << "the checkpoint should catch a contact in flight";
+}
+
+TEST(CheckpointRestart, CavityWithReusedAssemblyContinuesBitForBit)
+{
+    const CaseConfig config = read_case_string(cavity_case(), "test:cavity");
+    expect_bit_identical_continuation<2>(config, 5, 5);
+    const CaseConfig hypre =
+        read_case_string(cavity_case(), "test:cavity", {"simple.pressure_solver=hypre"});
+    expect_bit_identical_continuation<2>(hypre, 5, 5);
+}
+
+class CheckpointFileTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        dir_ = scratch(::testing::UnitTest::GetInstance()->current_test_info()->name());
+        config_ = read_case_string(cavity_case(), "test:cavity");
+        Simulation<2> sim(config_);
+        static_cast<void>(sim.advance());
+        file_ = dir_ / "state.ckpt";
+        write_checkpoint(file_, sim, RunRecord{});
+        bytes_ = read_bytes(file_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    /// The reason a damaged copy is refused with.
+    std::string refusal(const std::string& bytes)
+    {
+        const fs::path damaged = dir_ / "damaged.ckpt";
+        write_bytes(damaged, bytes);
+        try {
+            const CheckpointFile checkpoint(damaged);
+        } catch (const CheckpointError& e) {
+            return e.what();
+        }
+        return "accepted";
+    }
+
+    fs::path dir_;
+    fs::path file_;
+    std::string bytes_;
+    CaseConfig config_;
+};
+
+TEST_F(CheckpointFileTest, OneFlippedBitAnywhereIsDetected)
+{
+    for (const std::size_t at : {std::size_t{20}, bytes_.size() / 2, bytes_.size() - 20}) {
+        std::string damaged = bytes_;
+        damaged[at] = static_cast<char>(damaged[at] ^ 0x04);
+        EXPECT_NE(refusal(damaged).find("damaged"), std::string::npos) << "byte " << at;
+    }
+}
+
+TEST_F(CheckpointFileTest, TruncatedOtherAndNewerFilesAreRefusedWithTheReason)
+{
+    EXPECT_NE(refusal(bytes_.substr(0, bytes_.size() / 2)).find("truncated"), std::string::npos);
+    EXPECT_NE(refusal(bytes_.substr(0, 10)).find("truncated"), std::string::npos);
+    EXPECT_NE(refusal("# a case file\n" + bytes_).find("not an fddem checkpoint"),
+              std::string::npos);
+    std::string newer = bytes_;
+    newer[8] = static_cast<char>(checkpoint_format_version + 1);
+    EXPECT_NE(refusal(newer).find("format version 2"), std::string::npos);
+    EXPECT_EQ(refusal(bytes_), "accepted");
+}
+
+TEST_F(CheckpointFileTest, AnotherGridIsRefusedByKey)
+{
+    const CaseConfig finer =
+        read_case_string(cavity_case(), "test:cavity", {"domain.cells=[16,12]"});
+    Simulation<2> sim(finer);
+    RunRecord record;
+    const CheckpointFile checkpoint(file_);
+    try {
+        checkpoint.restore(sim, record);
+        FAIL() << "restored into another grid";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.key(), "domain.cells");
+        EXPECT_NE(std::string(e.what()).find("[12, 12]"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("[16, 12]"), std::string::npos) << e.what();
+    }
+}
+
+TEST_F(CheckpointFileTest, ChangedTimeStepIsAdopted)
+{
+    const CaseConfig smaller = read_case_string(cavity_case(), "test:cavity", {"time.dt=0.025"});
+    Simulation<2> sim(smaller);
+    RunRecord record;
+    CheckpointFile(file_).restore(sim, record);
+    EXPECT_EQ(sim.clock().step, 1);
+    EXPECT_EQ(sim.clock().time, 0.05);
+    EXPECT_EQ(sim.clock().dt, 0.025);
+    static_cast<void>(sim.advance());
+    EXPECT_DOUBLE_EQ(sim.clock().time, 0.075);
+}
+
+TEST(CheckpointFiles, ListedNewestFirstAndPrunedToTheNewest)
+{
+    const fs::path run = scratch("listing");
+    fs::create_directories(checkpoint_directory(run));
+    for (const long step : {5L, 100L, 20L}) {
+        write_bytes(checkpoint_path(run, step), "x");
+    }
+    write_bytes(checkpoint_directory(run) / "checkpoint_0000000200.ckpt.tmp.123", "partial");
+    write_bytes(checkpoint_directory(run) / "checkpoint_0000000300.ckpt.damaged", "bad");
+    const std::vector<CheckpointEntry> listed = list_checkpoints(run);
+    ASSERT_EQ(listed.size(), 3U);
+    EXPECT_EQ(listed[0].step, 100);
+    EXPECT_EQ(listed[2].step, 5);
+    EXPECT_EQ(listed[0].path.filename(), "checkpoint_0000000100.ckpt");
+
+    prune_checkpoints(run, 2);
+    const std::vector<CheckpointEntry> kept = list_checkpoints(run);
+    ASSERT_EQ(kept.size(), 2U);
+    EXPECT_EQ(kept[1].step, 20);
+    remove_stale_temporaries(checkpoint_directory(run));
+    EXPECT_FALSE(fs::exists(checkpoint_directory(run) / "checkpoint_0000000200.ckpt.tmp.123"));
+    EXPECT_TRUE(fs::exists(checkpoint_directory(run) / "checkpoint_0000000300.ckpt.damaged"));
+    EXPECT_TRUE(list_checkpoints(run / "nothing_here").empty());
+    fs::remove_all(run);
+}
+
+} // namespace
+} // namespace fddem
