@@ -82,6 +82,11 @@ public:
     /// Seconds spent so far in the DEM sub-steps (eq. (18)).
     [[nodiscard]] double contact_seconds() const noexcept { return contact_seconds_; }
     [[nodiscard]] const CaseConfig& config() const noexcept { return config_; }
+    /// The persistent contact state (tangential springs of the open contacts).
+    [[nodiscard]] const ContactHistory<Dim>& contact_history() const noexcept
+    {
+        return contact_history_;
+    }
     [[nodiscard]] const PoissonSolver<Dim>& pressure_solver() const noexcept { return *poisson_; }
     /// Seconds spent so far in the momentum and pressure stages.
     [[nodiscard]] double momentum_seconds() const noexcept { return momentum_seconds_; }
@@ -121,6 +126,8 @@ private:
     std::optional<CellList<Dim>> contact_cells_;
     DemWalls<Dim> walls_{};
     std::vector<DemBody<Dim>> dem_bodies_;
+    /// The tangential springs of the open contacts, kept across time steps (to be checkpointed).
+    ContactHistory<Dim> contact_history_;
     Vec<Dim> gravity_ = Vec<Dim>::Zero();
     Vec<Dim> uniform_force_ = Vec<Dim>::Zero();
     double coupling_seconds_ = 0.0;
