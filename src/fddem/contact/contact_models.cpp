@@ -52,6 +52,7 @@ std::span<const ContactModelEntry> contact_models()
 std::vector<std::string> contact_model_names()
 {
     std::vector<std::string> names;
+    names.reserve(registry.size());
     for (const ContactModelEntry& entry : registry) {
         names.emplace_back(entry.name);
     }

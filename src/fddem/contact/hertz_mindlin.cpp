@@ -18,7 +18,7 @@ double HertzMindlin::hertz_stiffness(const ContactPair& pair)
     return 4.0 / 3.0 * pair.young_modulus * std::sqrt(pair.effective_radius);
 }
 
-ContactLaw HertzMindlin::law(NormalContact c, const ContactPair& pair) const
+ContactLaw HertzMindlin::law(NormalContact c, const ContactPair& pair)
 {
     const double k_hertz = hertz_stiffness(pair);
     const double root = std::sqrt(c.overlap); // α^{1/2}
@@ -31,7 +31,7 @@ ContactLaw HertzMindlin::law(NormalContact c, const ContactPair& pair) const
             normal_damping * std::sqrt(tangential_stiffness / normal_tangent_stiffness)};
 }
 
-double HertzMindlin::elastic_collision_time(const ContactPair& pair, double impact_speed) const
+double HertzMindlin::elastic_collision_time(const ContactPair& pair, double impact_speed)
 {
     const double max_overlap = std::pow(
         1.25 * pair.effective_mass * impact_speed * impact_speed / hertz_stiffness(pair), 0.4);

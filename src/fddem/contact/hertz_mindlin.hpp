@@ -42,12 +42,14 @@ public:
     /// k_H = (4/3) E* √R* [N/m^{3/2}].
     [[nodiscard]] static double hertz_stiffness(const ContactPair& pair);
 
-    /// F_n, k_t and c_t at overlap α > 0 (see the file comment); needs E* > 0.
-    [[nodiscard]] ContactLaw law(NormalContact c, const ContactPair& pair) const;
+    /// F_n, k_t and c_t at overlap α > 0 (see the file comment); needs E* > 0. Static: every
+    /// constant is the pair's.
+    [[nodiscard]] static ContactLaw law(NormalContact c, const ContactPair& pair);
     /// The undamped duration at impact speed v > 0 [s].
-    [[nodiscard]] double elastic_collision_time(const ContactPair& pair, double impact_speed) const;
+    [[nodiscard]] static double elastic_collision_time(const ContactPair& pair,
+                                                       double impact_speed);
     /// e of the pair (independent of the impact speed).
-    [[nodiscard]] double restitution(const ContactPair& pair) const { return pair.restitution; }
+    [[nodiscard]] static double restitution(const ContactPair& pair) { return pair.restitution; }
 };
 
 static_assert(ContactModel<HertzMindlin>);
