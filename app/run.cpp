@@ -272,6 +272,14 @@ void Run<Dim>::write_particles()
 template <int Dim>
 void Run<Dim>::report_derived()
 {
+    if (config_.contact_impact_velocity > 0.0) {
+        progress_.message(fmt::format(
+            "fddem: contact ({}, {} coupling): a wall collision of the lightest body at "
+            "impact speed {:.3g} lasts {:.3g} s (undamped) with restitution {:.4g}; {} DEM "
+            "sub-steps per time step",
+            config_.contact_model, config_.contact_coupling, config_.contact_impact_velocity,
+            config_.contact_duration, config_.contact_restitution, config_.contact_substeps));
+    }
     if (config_.contact_stiffness > 0.0) {
         progress_.message(fmt::format(
             "fddem: contact ({} coupling): k = {:.6g}, c = {:.6g}; a wall collision of the "

@@ -3,6 +3,7 @@
 
 #include "fddem/contact/contact_geometry.hpp"
 #include "fddem/contact/dem_integrator.hpp"
+#include "fddem/contact/tangential_contact.hpp"
 
 #include <algorithm>
 
@@ -15,17 +16,27 @@ BallState<Dim> ball_of(const DemBody<Dim>& b)
     return {b.centre, b.radius, b.velocity, b.omega};
 }
 
-/// Contact forces and torques on every body at the current state; tracks the largest overlap.
 template <int Dim>
+PairSide side_of(const DemBody<Dim>& b)
+{
+    return ball_side(b.mass, b.inertia, b.radius, b.material, b.is_mobile);
+}
+
+/// Contact forces and torques on every body at the current state, for one contact model; keeps
+/// the tangential springs of the open contacts and tracks the largest overlap.
+template <int Dim, class Model>
 class ContactForces {
 public:
-    ContactForces(std::size_t n, const DemWalls<Dim>& walls, const DemSettings& settings)
-        : force(n), torque(n), walls_(walls), law_(settings.law)
+    ContactForces(std::size_t n, const DemWalls<Dim>& walls, const Model& model,
+                  ContactHistory<Dim>& history)
+        : force(n), torque(n), walls_(walls), model_(model), history_(history)
     {
     }
 
-    void evaluate(std::span<const DemBody<Dim>> bodies, CellList<Dim>& cells,
-                  DemOutcome<Dim>& outcome)
+    /// Forces at the bodies' state. `step` = Δt_i; the springs stretch by v_t Δt_i only if
+    /// `is_new_substep` (not when the state of the last sub-step is merely re-evaluated).
+    void evaluate(std::span<const DemBody<Dim>> bodies, CellList<Dim>& cells, double step,
+                  bool is_new_substep, DemOutcome<Dim>& outcome)
     {
         std::fill(force.begin(), force.end(), Vec<Dim>::Zero());
         std::fill(torque.begin(), torque.end(), zero_angular<Dim>());
@@ -34,32 +45,49 @@ public:
             centres_[b] = bodies[b].centre;
         }
         cells.find_pairs(centres_, pairs_);
+        previous_.springs.swap(history_.springs);
+        history_.springs.clear();
+        step_ = step;
+        stretch_ = is_new_substep ? step : 0.0;
         in_contact = 0;
         for (const auto& [i, j] : pairs_) {
             const auto a = static_cast<std::size_t>(i);
             const auto b = static_cast<std::size_t>(j);
+            if (!bodies[a].is_mobile && !bodies[b].is_mobile) {
+                continue; // neither can move: nothing to resolve
+            }
             const ContactGeometry<Dim> g =
                 ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]));
             if (g.overlap <= 0.0) {
                 continue;
             }
-            apply(g, a, b, std::min(bodies[a].radius, bodies[b].radius), outcome);
+            apply(g, a, b, {i, j}, make_contact_pair(side_of(bodies[a]), side_of(bodies[b])),
+                  std::min(bodies[a].radius, bodies[b].radius), outcome);
         }
         for (std::size_t a = 0; a < bodies.size(); ++a) {
+            if (!bodies[a].is_mobile) {
+                continue;
+            }
             for (int d = 0; d < Dim; ++d) {
-                if (!walls_.has_walls[static_cast<std::size_t>(d)]) {
+                const auto axis = static_cast<std::size_t>(d);
+                if (!walls_.has_walls[axis]) {
                     continue;
                 }
                 for (int side = 0; side < 2; ++side) {
                     const double at = walls_.origin[d] + side * walls_.length[d];
                     const ContactGeometry<Dim> g =
-                        ball_wall_contact(ball_of(bodies[a]), d, side, at);
+                        ball_wall_contact(ball_of(bodies[a]), d, side, at,
+                                          walls_.velocity[axis][static_cast<std::size_t>(side)]);
                     if (g.overlap > 0.0) {
-                        apply(g, a, bodies.size(), bodies[a].radius, outcome);
+                        apply(g, a, bodies.size(), wall_contact_key(static_cast<int>(a), d, side),
+                              make_contact_pair(side_of(bodies[a]), wall_side(walls_.material)),
+                              bodies[a].radius, outcome);
                     }
                 }
             }
         }
+        std::sort(history_.springs.begin(), history_.springs.end(),
+                  [](const auto& x, const auto& y) { return x.key < y.key; });
     }
 
     std::vector<Vec<Dim>> force;
@@ -67,18 +95,31 @@ public:
     int in_contact = 0;
 
 private:
-    /// The spring–dashpot force F = kα + cα̇ along n (paper, after eq. (18)) on both bodies;
-    /// `second` = n is the wall.
+    /// The model's normal force F_n n, the friction force F_t and the rolling torque on both
+    /// bodies; `second` = n is a wall.
     void apply(const ContactGeometry<Dim>& g, std::size_t first, std::size_t second,
-               double smaller_radius, DemOutcome<Dim>& outcome)
+               const ContactKey& key, const ContactPair& pair, double smaller_radius,
+               DemOutcome<Dim>& outcome)
     {
-        const double magnitude = law_.stiffness * g.overlap + law_.damping * g.overlap_rate;
-        const Vec<Dim> on_second = magnitude * g.normal;
+        const ContactLaw law = model_.law({g.overlap, g.overlap_rate}, pair);
+        Vec<Dim> on_second = law.normal_force * g.normal;
+        AngularVec<Dim> rolling = zero_angular<Dim>();
+        if (pair.friction > 0.0) {
+            const TangentialSpring<Dim>* old = previous_.find(key);
+            TangentialSpring<Dim> spring{key, old != nullptr ? old->displacement
+                                                             : Vec<Dim>(Vec<Dim>::Zero())};
+            on_second += tangential_force<Dim>(g.normal, g.slip_velocity, law, pair.friction,
+                                               stretch_, spring.displacement);
+            history_.springs.push_back(spring);
+        }
+        if (pair.rolling_friction > 0.0) {
+            rolling = rolling_torque<Dim>(g.rolling_omega, g.normal, law.normal_force, pair, step_);
+        }
         force[first] -= on_second;
-        torque[first] += cross(g.lever_first, Vec<Dim>(-on_second));
+        torque[first] += cross(g.lever_first, Vec<Dim>(-on_second)) + rolling;
         if (second < force.size()) {
             force[second] += on_second;
-            torque[second] += cross(g.lever_second, on_second);
+            torque[second] += cross(g.lever_second, on_second) - rolling;
         }
         outcome.max_overlap = std::max(outcome.max_overlap, g.overlap);
         outcome.max_relative_overlap =
@@ -91,66 +132,76 @@ private:
     }
 
     const DemWalls<Dim>& walls_;
-    LinearSpringDashpot::Params law_;
+    const Model& model_;
+    ContactHistory<Dim>& history_;
+    ContactHistory<Dim> previous_; ///< the springs before this evaluation
+    double step_ = 0.0;            ///< Δt_i [s]
+    double stretch_ = 0.0;         ///< time over which the springs stretch now [s]
     std::vector<Vec<Dim>> centres_;
     std::vector<std::pair<int, int>> pairs_;
 };
 
-} // namespace
-
-template <int Dim>
-DemOutcome<Dim> advance_contacts(std::span<DemBody<Dim>> bodies, const DemWalls<Dim>& walls,
-                                 const DemSettings& settings, double dt, CellList<Dim>& cells)
+template <int Dim, class Model>
+DemOutcome<Dim> advance_with(const Model& model, std::span<DemBody<Dim>> bodies,
+                             const DemWalls<Dim>& walls, const DemSettings& settings, double dt,
+                             CellList<Dim>& cells, ContactHistory<Dim>& history)
 {
     const std::size_t n = bodies.size();
     DemOutcome<Dim> outcome;
     outcome.mean_force.assign(n, Vec<Dim>::Zero());
     outcome.mean_torque.assign(n, zero_angular<Dim>());
     outcome.has_contact.assign(n, false);
-    ContactForces<Dim> contacts(n, walls, settings);
-    contacts.evaluate(bodies, cells, outcome);
-
     const double step = dt / settings.substeps;
     const double half = 0.5 * step;
     const double weight = 1.0 / settings.substeps; // each sub-step's share of the mean
+    ContactForces<Dim, Model> contacts(n, walls, model, history);
+    contacts.evaluate(bodies, cells, step, false, outcome);
+    const auto kick = [&](std::size_t b) {
+        DemBody<Dim>& body = bodies[b];
+        outcome.mean_force[b] += 0.5 * weight * contacts.force[b];
+        outcome.mean_torque[b] += 0.5 * weight * contacts.torque[b];
+        body.velocity = half_kick(body.velocity, Vec<Dim>(contacts.force[b] + body.steady_force),
+                                  body.mass, settings.beta, half);
+        body.omega = half_kick(body.omega, AngularVec<Dim>(contacts.torque[b] + body.steady_torque),
+                               body.inertia, settings.beta, half);
+    };
     for (int s = 0; s < settings.substeps; ++s) {
         for (std::size_t b = 0; b < n; ++b) {
-            DemBody<Dim>& body = bodies[b];
-            if (body.is_mobile) {
-                outcome.mean_force[b] += 0.5 * weight * contacts.force[b];
-                outcome.mean_torque[b] += 0.5 * weight * contacts.torque[b];
-                body.velocity =
-                    half_kick(body.velocity, Vec<Dim>(contacts.force[b] + body.steady_force),
-                              body.mass, settings.beta, half);
-                body.omega =
-                    half_kick(body.omega, AngularVec<Dim>(contacts.torque[b] + body.steady_torque),
-                              body.inertia, settings.beta, half);
+            if (bodies[b].is_mobile) {
+                kick(b);
             }
-            body.centre = drift<Dim>(body.centre, body.velocity, step);
+            bodies[b].centre = drift<Dim>(bodies[b].centre, bodies[b].velocity, step);
         }
-        contacts.evaluate(bodies, cells, outcome);
+        contacts.evaluate(bodies, cells, step, true, outcome);
         for (std::size_t b = 0; b < n; ++b) {
-            DemBody<Dim>& body = bodies[b];
-            if (!body.is_mobile) {
-                continue;
+            if (bodies[b].is_mobile) {
+                kick(b);
             }
-            outcome.mean_force[b] += 0.5 * weight * contacts.force[b];
-            outcome.mean_torque[b] += 0.5 * weight * contacts.torque[b];
-            body.velocity =
-                half_kick(body.velocity, Vec<Dim>(contacts.force[b] + body.steady_force), body.mass,
-                          settings.beta, half);
-            body.omega =
-                half_kick(body.omega, AngularVec<Dim>(contacts.torque[b] + body.steady_torque),
-                          body.inertia, settings.beta, half);
         }
     }
     outcome.n_contacts = contacts.in_contact;
     return outcome;
 }
 
+} // namespace
+
+template <int Dim>
+DemOutcome<Dim> advance_contacts(std::span<DemBody<Dim>> bodies, const DemWalls<Dim>& walls,
+                                 const DemSettings& settings, double dt, CellList<Dim>& cells,
+                                 ContactHistory<Dim>& history)
+{
+    return std::visit(
+        [&](const auto& model) {
+            return advance_with<Dim>(model, bodies, walls, settings, dt, cells, history);
+        },
+        settings.model);
+}
+
 template DemOutcome<2> advance_contacts<2>(std::span<DemBody<2>>, const DemWalls<2>&,
-                                           const DemSettings&, double, CellList<2>&);
+                                           const DemSettings&, double, CellList<2>&,
+                                           ContactHistory<2>&);
 template DemOutcome<3> advance_contacts<3>(std::span<DemBody<3>>, const DemWalls<3>&,
-                                           const DemSettings&, double, CellList<3>&);
+                                           const DemSettings&, double, CellList<3>&,
+                                           ContactHistory<3>&);
 
 } // namespace fddem

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// The contact part of one fluid time step: the bodies are advanced through N_i sub-steps of
-/// Δt_i = Δt/N_i under contact forces (ball–ball and ball–wall, linear spring–dashpot) plus a
-/// force held constant over the step (weight and the last hydrodynamic force), eq. (18), with
-/// the paper's velocity formula split into half-kicks around the drift (dem_integrator.hpp).
+/// Δt_i = Δt/N_i under contact forces and torques (ball–ball and ball–wall; the model of
+/// contact_models.hpp, friction and rolling resistance of tangential_contact.hpp) plus a force
+/// held constant over the step (the buoyant weight), eq. (18), with the paper's velocity formula
+/// split into half-kicks around the drift (dem_integrator.hpp). The tangential springs persist
+/// in a ContactHistory the caller owns.
 ///
 /// The result is used in two ways (contact.coupling): the time-averaged contact force and torque
 /// enter eqs. (13)–(14) ("additive"), or the sub-stepped end state replaces (13)–(14) and (17)
@@ -11,9 +13,12 @@
 /// of (13) and (14)").
 
 #include "fddem/contact/cell_list.hpp"
-#include "fddem/contact/linear_spring_dashpot.hpp"
+#include "fddem/contact/contact_history.hpp"
+#include "fddem/contact/contact_models.hpp"
+#include "fddem/contact/material.hpp"
 #include "fddem/core/vec.hpp"
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -31,6 +36,7 @@ struct DemBody {
     bool is_mobile = true; ///< false: fixed or prescribed (moves at its velocity, unaffected)
     Vec<Dim> steady_force; ///< held over the step: weight, hydrodynamic force [N]
     AngularVec<Dim> steady_torque; ///< [N·m]
+    Material material{};           ///< its surface (friction, and E, ν, e for Hertz–Mindlin)
 };
 
 /// The box walls a body can hit: the non-periodic axes of [origin, origin + length].
@@ -39,10 +45,22 @@ struct DemWalls {
     Vec<Dim> origin;
     Vec<Dim> length;
     std::array<bool, Dim> has_walls; ///< per axis
+    /// Velocity of each wall [m/s], [axis][side]; tangential only (a sliding wall).
+    std::array<std::array<Vec<Dim>, 2>, Dim> velocity = at_rest();
+    Material material{}; ///< the walls' surface
+
+    [[nodiscard]] static std::array<std::array<Vec<Dim>, 2>, Dim> at_rest()
+    {
+        std::array<std::array<Vec<Dim>, 2>, Dim> v;
+        for (auto& axis : v) {
+            axis.fill(Vec<Dim>::Zero());
+        }
+        return v;
+    }
 };
 
 struct DemSettings {
-    LinearSpringDashpot::Params law;
+    AnyContactModel model;
     double beta = 0.0; ///< velocity damping β of eq. (18) [kg/s]
     int substeps = 1;  ///< N_i
 };
@@ -58,9 +76,12 @@ struct DemOutcome {
     int n_contacts = 0;                       ///< contacts at the end of the step
 };
 
-/// Advances `bodies` (centre, velocity, omega) through settings.substeps sub-steps of dt.
+/// Advances `bodies` (centre, velocity, omega) through settings.substeps sub-steps of dt (one
+/// time step). `history` holds the tangential springs of the open contacts, body indices being
+/// positions in `bodies`; on return it holds those open at the end of the step.
 template <int Dim>
 DemOutcome<Dim> advance_contacts(std::span<DemBody<Dim>> bodies, const DemWalls<Dim>& walls,
-                                 const DemSettings& settings, double dt, CellList<Dim>& cells);
+                                 const DemSettings& settings, double dt, CellList<Dim>& cells,
+                                 ContactHistory<Dim>& history);
 
 } // namespace fddem

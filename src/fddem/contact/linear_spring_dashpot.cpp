@@ -28,6 +28,10 @@ LinearSpringDashpot::LinearSpringDashpot(const Params& params, double reference_
         throw InputError("", 0, "contact.damping",
                          "must be >= 0 (got " + std::to_string(params.damping) + ")");
     }
+    if (!(params.tangential_ratio > 0.0)) {
+        throw InputError("", 0, "contact.tangential_stiffness_ratio",
+                         "must be > 0 (got " + std::to_string(params.tangential_ratio) + ")");
+    }
     if (damping_ratio(params, reference_mass) >= 1.0) {
         throw InputError("", 0, "contact.damping",
                          "overdamped: damping ratio c/(2 sqrt(k m)) = " +
@@ -51,6 +55,18 @@ LinearSpringDashpot::Params LinearSpringDashpot::from_restitution(double restitu
     const double omega_0 = omega_d / std::sqrt(1.0 - zeta * zeta);
     const double stiffness = mass * omega_0 * omega_0;
     return {stiffness, 2.0 * zeta * std::sqrt(stiffness * mass)};
+}
+
+ContactLaw LinearSpringDashpot::law(NormalContact c, const ContactPair& /*pair*/) const noexcept
+{
+    return {normal_force(c), params_.tangential_ratio * params_.stiffness,
+            std::sqrt(params_.tangential_ratio) * params_.damping};
+}
+
+double LinearSpringDashpot::elastic_collision_time(const ContactPair& pair,
+                                                   double /*impact_speed*/) const
+{
+    return std::numbers::pi * std::sqrt(pair.effective_mass / params_.stiffness);
 }
 
 double LinearSpringDashpot::contact_time(double mass) const

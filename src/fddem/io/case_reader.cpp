@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/io/case_reader.hpp"
 
-#include "fddem/contact/linear_spring_dashpot.hpp"
+#include "fddem/contact/contact_models.hpp"
 #include "fddem/core/errors.hpp"
 #include "fddem/io/case_schema.hpp"
 #include "fddem/io/nondimensional.hpp"
@@ -671,15 +671,197 @@ private:
         }
     }
 
-    /// [contact] → k, c and N_i (recorded in [derived]): from stiffness and damping, or from
-    /// the restitution and duration of a wall collision of the lightest free body.
+    /// Keys that belong to the other contact model stop the case: they would be ignored. (None
+    /// of them has a default filled in, so a case as run reads back.)
+    void check_model_keys(const CaseConfig& c) const
+    {
+        const bool is_linear = c.contact_model == "linear";
+        const std::vector<std::string> linear_only = {"stiffness", "damping", "duration",
+                                                      "tangential_stiffness_ratio"};
+        const std::vector<std::string> hertz_only = {"young_modulus", "poisson_ratio",
+                                                     "impact_velocity"};
+        const std::vector<std::string> hertz_surface = {"young_modulus", "poisson_ratio",
+                                                        "restitution"};
+        const std::string other = is_linear ? "hertz_mindlin" : "linear";
+        const auto fail = [&](const std::string& key, const toml::node* n) {
+            where_.fail(key, n,
+                        "only contact.model = \"" + other + "\" takes this key (the case uses \"" +
+                            c.contact_model + "\")");
+        };
+        for (const std::string& name : is_linear ? hertz_only : linear_only) {
+            if (const toml::node* n = node("contact", name)) {
+                fail("contact." + name, n);
+            }
+        }
+        if (!is_linear) {
+            return;
+        }
+        for (const std::string& name : hertz_surface) {
+            if (const toml::node* n = node("walls", name)) {
+                fail("walls." + name, n);
+            }
+            if (const toml::array* bodies = find_table_array(doc_, "bodies")) {
+                for (const toml::node& element : *bodies) {
+                    if (const toml::node* n = element.as_table()->get(name)) {
+                        fail("bodies." + name, n);
+                    }
+                }
+            }
+        }
+    }
+
+    /// One surface: its own keys in `table` (a [[bodies]] entry or [walls]), else [contact]'s.
+    Material surface(const toml::table* table) const
+    {
+        const auto value = [&](const std::string& name, double fallback) {
+            const toml::node* own = table != nullptr ? table->get(name) : nullptr;
+            const toml::node* common = node("contact", name);
+            const toml::node* n = own != nullptr ? own : common;
+            return n != nullptr ? n->value<double>().value_or(fallback) : fallback;
+        };
+        constexpr double typical_poisson_ratio = 0.3; // the schema's documented default
+        Material m;
+        m.young_modulus = value("young_modulus", 0.0);
+        m.poisson_ratio = value("poisson_ratio", typical_poisson_ratio);
+        m.friction = value("friction", 0.0);
+        m.rolling_friction = value("rolling_friction", 0.0);
+        m.restitution = value("restitution", 1.0);
+        return m;
+    }
+
+    /// Hertz–Mindlin needs E for every body, and for the walls if there are any.
+    void check_young_moduli(const CaseConfig& c, bool has_walls) const
+    {
+        const std::string message = "hertz_mindlin needs a Young's modulus: give "
+                                    "contact.young_modulus (or young_modulus in every [[bodies]]"
+                                    " and in [walls])";
+        const toml::array* bodies = find_table_array(doc_, "bodies");
+        for (std::size_t k = 0; k < c.bodies.size(); ++k) {
+            if (!(c.bodies[k].material.young_modulus > 0.0)) {
+                where_.fail("contact.young_modulus", &(*bodies)[k], message);
+            }
+        }
+        if (has_walls && !(c.wall_material.young_modulus > 0.0)) {
+            where_.fail("contact.young_modulus", doc_.get("walls"), message);
+        }
+    }
+
+    /// The fastest impact to expect, when contact.impact_velocity is not given: falling the
+    /// largest box side under gravity, plus twice the fastest initial body (head-on) and the
+    /// fastest wall. t_c ∝ v^(−1/5), so a generous estimate costs few sub-steps.
+    double impact_velocity(const CaseConfig& c) const
+    {
+        if (const toml::node* n = node("contact", "impact_velocity")) {
+            return n->value<double>().value_or(0.0);
+        }
+        const auto norm = [](const std::vector<double>& v) {
+            double sum = 0.0;
+            for (const double x : v) {
+                sum += x * x;
+            }
+            return std::sqrt(sum);
+        };
+        double body = 0.0;
+        for (const BodyConfig& b : c.bodies) {
+            body = std::max(body, norm(b.velocity));
+        }
+        double wall = 0.0;
+        for (const auto& axis : c.wall_velocity) {
+            wall = std::max({wall, norm(axis[0]), norm(axis[1])});
+        }
+        const double fall =
+            std::sqrt(2.0 * norm(c.gravity) * *std::max_element(c.size.begin(), c.size.end()));
+        const double v = fall + 2.0 * body + wall;
+        if (!(v > 0.0)) {
+            where_.fail("contact.impact_velocity", doc_.get("contact"),
+                        "cannot estimate the fastest impact (no gravity, bodies and walls at "
+                        "rest): give contact.impact_velocity");
+        }
+        return v;
+    }
+
+    /// [contact] → the model's coefficients and N_i (recorded in [derived]). Linear: k and c
+    /// from stiffness and damping, or from the restitution and duration of a wall collision of
+    /// the lightest free body. Hertz–Mindlin: the surfaces' E, ν and e, and the impact speed.
     void derive_contact(CaseConfig& c)
+    {
+        if (c.contact_model == "none") {
+            return; // no collisions to resolve; [contact] keys are ignored
+        }
+        check_model_keys(c);
+        const bool is_linear = c.contact_model == "linear";
+        if (is_linear) {
+            check_linear_keys();
+        }
+        const toml::array* bodies = find_table_array(doc_, "bodies");
+        for (std::size_t k = 0; k < c.bodies.size(); ++k) {
+            c.bodies[k].material = surface((*bodies)[k].as_table());
+        }
+        c.wall_material = surface(doc_.get_as<toml::table>("walls"));
+        if (const toml::node* ratio = node("contact", "tangential_stiffness_ratio")) {
+            c.contact_tangential_ratio = ratio->value<double>().value_or(0.0);
+        }
+        const bool has_walls =
+            std::any_of(c.periodic.begin(), c.periodic.end(), [](bool p) { return !p; });
+
+        std::vector<PairSide> sides;
+        double lightest = std::numeric_limits<double>::infinity();
+        PairSide lightest_side;
+        for (const BodyConfig& b : c.bodies) {
+            const double r = 0.5 * b.diameter;
+            const double volume = dimension_ == 2 ? std::numbers::pi * r * r
+                                                  : 4.0 / 3.0 * std::numbers::pi * r * r * r;
+            const double mass = b.density * volume;
+            const double inertia = (dimension_ == 2 ? 0.5 : 0.4) * mass * r * r;
+            const bool is_free = b.motion == "free";
+            sides.push_back(ball_side(mass, inertia, r, b.material, is_free));
+            if (is_free && mass < lightest) {
+                lightest = mass;
+                lightest_side = sides.back();
+            }
+        }
+        if (!std::isfinite(lightest)) {
+            return; // no collisions to resolve
+        }
+        c.contact_reference_mass = lightest;
+        // The wall collision of the lightest body (two of them if the box has no walls).
+        const ContactPair reference = make_contact_pair(
+            lightest_side, has_walls ? wall_side(c.wall_material) : lightest_side);
+        double impact_speed = 0.0;
+        if (is_linear) {
+            derive_linear(c, lightest);
+        } else {
+            check_young_moduli(c, has_walls);
+            impact_speed = impact_velocity(c);
+            const HertzMindlin hertz;
+            c.contact_impact_velocity = impact_speed;
+            c.contact_duration = hertz.elastic_collision_time(reference, impact_speed);
+            c.contact_restitution = hertz.restitution(reference);
+            derived_.insert_or_assign("contact_impact_velocity", impact_speed);
+            derived_.insert_or_assign("contact_damping_constant",
+                                      HertzMindlin::damping_constant(reference.restitution));
+        }
+        const ContactModelInput input{
+            {c.contact_stiffness, c.contact_damping, c.contact_tangential_ratio}, lightest};
+        const std::optional<AnyContactModel> model = make_contact_model(c.contact_model, input);
+        set_substeps(c, shortest_collision(*model, sides,
+                                           has_walls ? std::optional<Material>(c.wall_material)
+                                                     : std::nullopt,
+                                           impact_speed));
+        derived_.insert_or_assign("contact_duration", c.contact_duration);
+        derived_.insert_or_assign("contact_restitution", c.contact_restitution);
+        derived_.insert_or_assign("contact_substeps",
+                                  static_cast<std::int64_t>(c.contact_substeps));
+        doc_.insert_or_assign("derived", derived_);
+    }
+
+    /// The linear model takes k (and c), or e and t_c.
+    void check_linear_keys() const
     {
         const toml::node* stiffness = node("contact", "stiffness");
         const toml::node* damping = node("contact", "damping");
         const toml::node* restitution = node("contact", "restitution");
         const toml::node* duration = node("contact", "duration");
-        const toml::node* substeps = node("contact", "substeps");
         if (stiffness != nullptr && (restitution != nullptr || duration != nullptr)) {
             where_.fail(restitution != nullptr ? "contact.restitution" : "contact.duration",
                         restitution != nullptr ? restitution : duration,
@@ -691,18 +873,15 @@ private:
                         "contact.damping needs contact.stiffness (with restitution and duration "
                         "fddem derives it)");
         }
-        double lightest = std::numeric_limits<double>::infinity();
-        for (const BodyConfig& b : c.bodies) {
-            if (b.motion == "free") {
-                const double r = 0.5 * b.diameter;
-                const double volume = dimension_ == 2 ? std::numbers::pi * r * r
-                                                      : 4.0 / 3.0 * std::numbers::pi * r * r * r;
-                lightest = std::min(lightest, b.density * volume);
-            }
-        }
-        if (c.contact_model == "none" || !std::isfinite(lightest)) {
-            return; // no collisions to resolve
-        }
+    }
+
+    /// The linear model's k and c, from stiffness and damping or from restitution and duration.
+    void derive_linear(CaseConfig& c, double lightest)
+    {
+        const toml::node* stiffness = node("contact", "stiffness");
+        const toml::node* damping = node("contact", "damping");
+        const toml::node* restitution = node("contact", "restitution");
+        const toml::node* duration = node("contact", "duration");
         LinearSpringDashpot::Params law{};
         try {
             if (stiffness != nullptr) {
@@ -715,6 +894,7 @@ private:
                     duration != nullptr ? duration->value<double>().value_or(c.dt) : c.dt;
                 law = LinearSpringDashpot::from_restitution(e, t, lightest);
             }
+            law.tangential_ratio = c.contact_tangential_ratio;
             const LinearSpringDashpot model(law, lightest);
             c.contact_stiffness = law.stiffness;
             c.contact_damping = law.damping;
@@ -726,35 +906,34 @@ private:
                                              : doc_.get("contact"),
                         e.what());
         }
-        // The shortest collision: two of the lightest bodies (reduced mass m/2).
-        const double shortest =
-            LinearSpringDashpot({c.contact_stiffness, 0.0}, lightest).contact_time(0.5 * lightest);
-        constexpr double min_per_collision = 10.0;
-        constexpr double auto_per_collision = 80.0;
-        const auto given = substeps->value<std::int64_t>().value_or(0);
-        if (given == 0) {
-            c.contact_substeps =
-                std::max(1, static_cast<int>(std::ceil(auto_per_collision * c.dt / shortest)));
-        } else {
-            c.contact_substeps = static_cast<int>(given);
-            const double per_collision = shortest / (c.dt / static_cast<double>(given));
-            if (per_collision < min_per_collision) {
-                where_.fail(
-                    "contact.substeps", substeps,
-                    fmt::format("{} DEM sub-steps per time step resolve a collision "
-                                "(duration {:.3g} s) with only {:.1f} sub-steps; at least "
-                                "{:g} are needed: use substeps >= {} (or 0 for automatic)",
-                                given, shortest, per_collision, min_per_collision,
-                                static_cast<long>(std::ceil(min_per_collision * c.dt / shortest))));
-            }
-        }
         derived_.insert_or_assign("contact_stiffness", c.contact_stiffness);
         derived_.insert_or_assign("contact_damping", c.contact_damping);
-        derived_.insert_or_assign("contact_duration", c.contact_duration);
-        derived_.insert_or_assign("contact_restitution", c.contact_restitution);
-        derived_.insert_or_assign("contact_substeps",
-                                  static_cast<std::int64_t>(c.contact_substeps));
-        doc_.insert_or_assign("derived", derived_);
+    }
+
+    /// N_i: `contact.substeps`, or enough for 80 sub-steps in the shortest collision `shortest`
+    /// [s]; at least 10 are required.
+    void set_substeps(CaseConfig& c, double shortest) const
+    {
+        const toml::node* substeps = node("contact", "substeps");
+        constexpr double min_per_collision = 10.0;
+        constexpr double auto_per_collision = 80.0;
+        const auto given_substeps = substeps->value<std::int64_t>().value_or(0);
+        if (given_substeps == 0) {
+            c.contact_substeps =
+                std::max(1, static_cast<int>(std::ceil(auto_per_collision * c.dt / shortest)));
+            return;
+        }
+        c.contact_substeps = static_cast<int>(given_substeps);
+        const double per_collision = shortest / (c.dt / static_cast<double>(given_substeps));
+        if (per_collision < min_per_collision) {
+            where_.fail(
+                "contact.substeps", substeps,
+                fmt::format("{} DEM sub-steps per time step resolve a collision "
+                            "(duration {:.3g} s) with only {:.1f} sub-steps; at least "
+                            "{:g} are needed: use substeps >= {} (or 0 for automatic)",
+                            given_substeps, shortest, per_collision, min_per_collision,
+                            static_cast<long>(std::ceil(min_per_collision * c.dt / shortest))));
+        }
     }
 
     void check_contradictions(const CaseConfig& c) const

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/io/case_schema.hpp"
 
+#include "fddem/contact/contact_models.hpp"
+
 #include <fmt/format.h>
 
 namespace fddem {
@@ -41,6 +43,33 @@ KeySpec choice(KeySpec spec, std::vector<std::string> choices)
     return spec;
 }
 
+/// The surface keys of [[bodies]] and [walls]: each falls back to the [contact] key of the
+/// same name (`whose`: "body" or "walls").
+void add_material_keys(std::vector<KeySpec>& s, const std::string& section,
+                       const std::string& whose)
+{
+    const std::string fallback = "none";
+    s.push_back(positive(key(section, "young_modulus", KeyType::real, "Pa", fallback,
+                             "Hertz–Mindlin: Young's modulus E of the " + whose +
+                                 "; default contact.young_modulus.")));
+    s.push_back(ranged(
+        key(section, "poisson_ratio", KeyType::real, "", fallback,
+            "Hertz–Mindlin: Poisson ratio ν of the " + whose + "; default contact.poisson_ratio."),
+        0.0, 0.5, false, true));
+    s.push_back(ranged(
+        key(section, "friction", KeyType::real, "", fallback,
+            "Sliding friction coefficient μ_s of the " + whose + "; default contact.friction."),
+        0.0, inf, false, false));
+    s.push_back(ranged(key(section, "rolling_friction", KeyType::real, "", fallback,
+                           "Rolling friction coefficient μ_r of the " + whose +
+                               "; default contact.rolling_friction."),
+                       0.0, inf, false, false));
+    s.push_back(ranged(key(section, "restitution", KeyType::real, "", fallback,
+                           "Hertz–Mindlin: restitution coefficient e of the " + whose +
+                               "; default contact.restitution."),
+                       0.0, 1.0, true, false));
+}
+
 } // namespace
 
 std::vector<KeySpec> case_schema()
@@ -67,6 +96,7 @@ std::vector<KeySpec> case_schema()
                                     "non-zero (a sliding wall, e.g. a lid).",
                                     wall)));
     }
+    add_material_keys(s, "walls", "walls (all share one set)");
 
     s.push_back(
         positive(key("fluid", "density", T::real, "kg/m³", std::nullopt, "Fluid density ρf.")));
@@ -151,6 +181,7 @@ std::vector<KeySpec> case_schema()
                            "Marker rings N_a (paper Fig. 1: 1 + 3 N_a (N_a + 1) markers); 0: "
                            "from coupling.marker_spacing_ratio."),
                        0, 1000, false, false));
+    add_material_keys(s, "bodies", "body");
 
     s.push_back(choice(key("coupling", "kernel", T::string, none, "\"hat\"",
                            "Discrete delta function: hat (the paper's linear d_h), roma3 (Roma, "
@@ -163,27 +194,57 @@ std::vector<KeySpec> case_schema()
 
     s.push_back(choice(key("contact", "model", T::string, none, "\"linear\"",
                            "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "
-                           "eq. (18)) or none (bodies pass through each other and the walls)."),
-                       {"linear", "none"}));
+                           "eq. (18)), hertz_mindlin (Hertz normal force with a restitution "
+                           "dashpot, Mindlin tangential stiffness; docs/method.md) or none "
+                           "(bodies pass through each other and the walls)."),
+                       contact_model_names()));
     s.push_back(choice(key("contact", "coupling", T::string, none, "\"paper\"",
                            "paper: while in contact, DEM replaces (13)–(14) and (17) (stable in "
                            "piles); additive: the mean contact force of the sub-steps is added "
                            "to (13)–(14) (unstable when collisions are much shorter than Δt)."),
                        {"additive", "paper"}));
     s.push_back(positive(key("contact", "stiffness", T::real, "N/m", "none",
-                             "Spring stiffness k (2D: per unit depth); or give restitution and "
-                             "duration instead.")));
+                             "Linear: spring stiffness k (2D: per unit depth); or give "
+                             "restitution and duration instead.")));
     s.push_back(ranged(key("contact", "damping", T::real, "N·s/m", "none",
-                           "Dashpot coefficient c (with stiffness; default 0)."),
+                           "Linear: dashpot coefficient c (with stiffness; default 0)."),
                        0.0, inf, false, false));
     s.push_back(ranged(key("contact", "restitution", T::real, none, "none",
-                           "Restitution coefficient e of a wall collision of the lightest body "
-                           "(with duration; default 1); fddem derives k and c."),
+                           "Restitution coefficient e. Linear: of a wall collision of the "
+                           "lightest body (with duration), fddem derives k and c; "
+                           "hertz_mindlin: of every body and wall without its own, fddem "
+                           "derives the dashpot. Default 1."),
                        0.0, 1.0, true, false));
     s.push_back(
         positive(key("contact", "duration", T::real, "s", "none",
-                     "Duration t_c of a wall collision of the lightest body; fddem "
+                     "Linear: duration t_c of a wall collision of the lightest body; fddem "
                      "derives k and c. Default (neither stiffness nor duration): time.dt.")));
+    s.push_back(ranged(key("contact", "tangential_stiffness_ratio", T::real, none, "none",
+                           "Linear: tangential spring k_t = κ k (dashpot c √κ) used when "
+                           "friction > 0. Default 2/7, which gives a sphere equal normal and "
+                           "tangential periods."),
+                       0.0, 10.0, true, false));
+    s.push_back(positive(key("contact", "young_modulus", T::real, "Pa", "none",
+                             "Hertz–Mindlin: Young's modulus E of every body and wall without "
+                             "its own (2D: a modulus per unit depth, docs/method.md).")));
+    s.push_back(ranged(key("contact", "poisson_ratio", T::real, none, "none",
+                           "Hertz–Mindlin: Poisson ratio ν of every body and wall without its "
+                           "own. Default 0.3."),
+                       0.0, 0.5, false, true));
+    s.push_back(ranged(key("contact", "friction", T::real, none, "0.0",
+                           "Sliding (Coulomb) friction coefficient μ_s of every body and wall "
+                           "without its own; a pair takes the geometric mean. 0: frictionless, "
+                           "as in the paper."),
+                       0.0, inf, false, false));
+    s.push_back(ranged(key("contact", "rolling_friction", T::real, none, "0.0",
+                           "Rolling friction coefficient μ_r of every body and wall without its "
+                           "own: a torque μ_r R* F_n against the relative rolling (constant "
+                           "directional torque model). 0: none."),
+                       0.0, inf, false, false));
+    s.push_back(positive(key("contact", "impact_velocity", T::real, "m/s", "none",
+                             "Hertz–Mindlin: the fastest impact expected, which sets the "
+                             "sub-steps (t_c ∝ v^(−1/5)). Default: √(2|g|L) (L the largest box "
+                             "side) + twice the fastest initial body + the fastest wall.")));
     s.push_back(ranged(key("contact", "velocity_damping", T::real, "kg/s", "0.0",
                            "Velocity damping β of eq. (18) (0: none, as in the paper)."),
                        0.0, inf, false, false));
@@ -214,11 +275,17 @@ std::vector<KeySpec> case_schema()
                     "input."));
 
     s.push_back(key("derived", "contact_stiffness", T::real, "N/m", "none",
-                    "Contact stiffness k used, written by fddem; ignored on input."));
+                    "Linear: contact stiffness k used, written by fddem; ignored on input."));
     s.push_back(key("derived", "contact_damping", T::real, "N·s/m", "none",
-                    "Contact damping c used, written by fddem; ignored on input."));
+                    "Linear: contact damping c used, written by fddem; ignored on input."));
+    s.push_back(key("derived", "contact_damping_constant", T::real, none, "none",
+                    "Hertz–Mindlin: A of the dashpot c_n = A √(m* k_H) α^(1/4) of a wall "
+                    "collision of the lightest body, written by fddem."));
+    s.push_back(key("derived", "contact_impact_velocity", T::real, "m/s", "none",
+                    "Hertz–Mindlin: the impact speed that set the sub-steps, written by fddem."));
     s.push_back(key("derived", "contact_duration", T::real, "s", "none",
-                    "Duration of a wall collision of the lightest body, written by fddem."));
+                    "Duration of a wall collision of the lightest body (hertz_mindlin: "
+                    "undamped, at the impact velocity), written by fddem."));
     s.push_back(key("derived", "contact_restitution", T::real, none, "none",
                     "Restitution of a wall collision of the lightest body, written by fddem."));
     s.push_back(key("derived", "contact_substeps", T::integer, none, "none",

@@ -4,6 +4,8 @@
 /// of entries of `domain.size` is the dimension). Every field mirrors one case key declared in
 /// io/case_schema.cpp, which holds its unit, default, range and doc.
 
+#include "fddem/contact/material.hpp"
+
 #include <array>
 #include <optional>
 #include <string>
@@ -28,6 +30,7 @@ struct BodyConfig {
     double omega = 0.0;           ///< initial (or prescribed) ω [rad/s] (2D)
     std::string motion = "free";  ///< "free", "prescribed" or "fixed"
     int n_rings = 0;              ///< N_a; 0: from coupling.marker_spacing_ratio
+    Material material;            ///< its surface: its own keys, else [contact]'s
 };
 
 struct CaseConfig {
@@ -76,7 +79,7 @@ struct CaseConfig {
 
     // [contact]: the DEM collision model (eq. (18)); stiffness, damping and substeps are
     // resolved by the reader (from restitution and duration when those are given).
-    std::string contact_model = "linear";   ///< "linear" (spring–dashpot) or "none"
+    std::string contact_model = "linear";   ///< a name in contact/contact_models.cpp
     std::string contact_coupling = "paper"; ///< "paper" or "additive"
     double contact_stiffness = 0.0;         ///< k [N/m] (2D: per unit depth)
     double contact_damping = 0.0;           ///< c [N·s/m]
@@ -84,6 +87,10 @@ struct CaseConfig {
     int contact_substeps = 1;               ///< N_i
     double contact_duration = 0.0;          ///< wall collision of the lightest body [s] (derived)
     double contact_restitution = 1.0;       ///< its restitution (derived)
+    double contact_tangential_ratio = 2.0 / 7.0; ///< κ = k_t / k of the linear model
+    double contact_impact_velocity = 0.0; ///< impact speed that sets the sub-steps [m/s] (Hertz)
+    double contact_reference_mass = 0.0;  ///< mass of the lightest free body [kg] (derived)
+    Material wall_material;               ///< the walls' surface: [walls] keys, else [contact]'s
 
     // [nondimensional]: given, fddem derives viscosity, gravity and body densities.
     std::optional<double> reynolds;       ///< Re = ρf U_c D / μ

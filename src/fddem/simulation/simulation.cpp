@@ -130,9 +130,18 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
         bodies_.push_back(body);
         couplings_.emplace_back(make_ball_markers(body.shape, n_rings));
     }
-    if (config.contact_model == "linear" && !bodies_.empty()) {
-        dem_ = DemSettings{{config.contact_stiffness, config.contact_damping},
-                           config.contact_beta,
+    const bool has_free_body =
+        std::any_of(bodies_.begin(), bodies_.end(),
+                    [](const RigidBody<Dim>& body) { return body.motion == Motion::free; });
+    const ContactModelInput input{
+        {config.contact_stiffness, config.contact_damping, config.contact_tangential_ratio},
+        config.contact_reference_mass};
+    std::optional<AnyContactModel> model;
+    if (has_free_body) {
+        model = make_contact_model(config.contact_model, input); // none: no collisions
+    }
+    if (model) {
+        dem_ = DemSettings{std::move(*model), config.contact_beta,
                            std::max(1, config.contact_substeps)};
         is_paper_contact_ = config.contact_coupling == "paper";
         double largest = 0.0;
@@ -142,9 +151,13 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
         contact_cells_.emplace(grid_.origin(), grid_.length(), largest);
         walls_.origin = grid_.origin();
         walls_.length = grid_.length();
+        walls_.material = config.wall_material;
         for (int d = 0; d < Dim; ++d) {
-            walls_.has_walls[static_cast<std::size_t>(d)] =
-                !bc_.is_periodic[static_cast<std::size_t>(d)];
+            const auto axis = static_cast<std::size_t>(d);
+            walls_.has_walls[axis] = !bc_.is_periodic[axis];
+            for (int side = 0; side < 2; ++side) {
+                walls_.velocity[axis][static_cast<std::size_t>(side)] = bc_.wall(d, side);
+            }
         }
     }
     place_markers();
@@ -331,9 +344,10 @@ void Simulation<Dim>::resolve_contacts(double dt, StepReport& report)
         d.is_mobile = body.motion == Motion::free;
         d.steady_force = (body.density - properties_.density) * body.volume() * gravity_;
         d.steady_torque = zero_angular<Dim>();
+        d.material = config_.bodies[b].material;
     }
     const DemOutcome<Dim> outcome =
-        advance_contacts<Dim>(dem_bodies_, walls_, *dem_, dt, *contact_cells_);
+        advance_contacts<Dim>(dem_bodies_, walls_, *dem_, dt, *contact_cells_, contact_history_);
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         BodyCoupling<Dim>& c = couplings_[b];
         c.is_in_contact = outcome.has_contact[b];

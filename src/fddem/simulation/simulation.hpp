@@ -83,6 +83,11 @@ public:
     /// Seconds spent so far in the DEM sub-steps (eq. (18)).
     [[nodiscard]] double contact_seconds() const noexcept { return contact_seconds_; }
     [[nodiscard]] const CaseConfig& config() const noexcept { return config_; }
+    /// The persistent contact state (tangential springs of the open contacts).
+    [[nodiscard]] const ContactHistory<Dim>& contact_history() const noexcept
+    {
+        return contact_history_;
+    }
     [[nodiscard]] const PoissonSolver<Dim>& pressure_solver() const noexcept { return *poisson_; }
     /// Seconds spent so far in the momentum and pressure stages.
     [[nodiscard]] double momentum_seconds() const noexcept { return momentum_seconds_; }
@@ -162,6 +167,7 @@ private:
             archive("contact.dem_velocity", c.dem_velocity);
             archive("contact.dem_omega", c.dem_omega);
         }
+        archive("contact.tangential_springs", self.contact_history_.springs);
         archive("seconds.coupling", self.coupling_seconds_);
         archive("seconds.contact", self.contact_seconds_);
         archive("seconds.momentum", self.momentum_seconds_);
@@ -208,6 +214,8 @@ private:
     std::optional<CellList<Dim>> contact_cells_;
     DemWalls<Dim> walls_{};
     std::vector<DemBody<Dim>> dem_bodies_;
+    /// The tangential springs of the open contacts, kept across time steps (to be checkpointed).
+    ContactHistory<Dim> contact_history_;
     Vec<Dim> gravity_ = Vec<Dim>::Zero();
     Vec<Dim> uniform_force_ = Vec<Dim>::Zero();
     double coupling_seconds_ = 0.0;

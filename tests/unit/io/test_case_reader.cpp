@@ -2,6 +2,7 @@
 // The case reader: a valid case reads to the expected values with defaults filled in, and
 // every kind of bad input stops with an InputError naming the file, the line and the key.
 
+#include "fddem/contact/hertz_mindlin.hpp"
 #include "fddem/core/errors.hpp"
 #include "fddem/io/case_reader.hpp"
 #include "fddem/io/case_schema.hpp"
@@ -339,6 +340,94 @@ std::vector<BadCase> bad_cases()
          23,
          "contact.restitution",
          "out of range"},
+        // Contact models and surfaces (issue 4): keys of the other model, missing or
+        // out-of-range material values, a misspelt model.
+        {"hertz_without_young_modulus",
+         v + body + "[contact]\nmodel = \"hertz_mindlin\"\n",
+         {},
+         f,
+         18,
+         "contact.young_modulus",
+         "needs a Young's modulus"},
+        {"hertz_walls_without_young_modulus",
+         v + body + "young_modulus = 1e9\n[contact]\nmodel = \"hertz_mindlin\"\n",
+         {},
+         f,
+         6,
+         "contact.young_modulus",
+         "needs a Young's modulus"},
+        {"young_modulus_with_linear",
+         v + body + "[contact]\nyoung_modulus = 1e9\n",
+         {},
+         f,
+         23,
+         "contact.young_modulus",
+         "only contact.model = \"hertz_mindlin\" takes this key"},
+        {"stiffness_with_hertz",
+         v + body + "[contact]\nmodel = \"hertz_mindlin\"\nyoung_modulus = 1e9\nstiffness = 1e6\n",
+         {},
+         f,
+         25,
+         "contact.stiffness",
+         "only contact.model = \"linear\" takes this key"},
+        {"body_restitution_with_linear",
+         v + body + "restitution = 0.5\n",
+         {},
+         f,
+         22,
+         "bodies.restitution",
+         "only contact.model = \"hertz_mindlin\" takes this key"},
+        {"poisson_ratio_out_of_range",
+         v + body +
+             "[contact]\nmodel = \"hertz_mindlin\"\nyoung_modulus = 1e9\npoisson_ratio = 0.5\n",
+         {},
+         f,
+         25,
+         "contact.poisson_ratio",
+         "out of range"},
+        {"negative_wall_friction",
+         replace(v, "y_high = [1.0, 0.0]", "y_high = [1.0, 0.0]\nfriction = -0.1"),
+         {},
+         f,
+         8,
+         "walls.friction",
+         "out of range"},
+        {"body_friction_not_a_number",
+         v + body + "friction = \"high\"\n",
+         {},
+         f,
+         22,
+         "bodies.friction",
+         "expected number"},
+        {"negative_rolling_friction",
+         v + body + "[contact]\nrolling_friction = -1.0\n",
+         {},
+         f,
+         23,
+         "contact.rolling_friction",
+         "out of range"},
+        {"misspelt_contact_model",
+         v + body + "[contact]\nmodel = \"hertz\"\n",
+         {},
+         f,
+         23,
+         "contact.model",
+         "did you mean 'hertz_mindlin'"},
+        {"hertz_no_impact_speed",
+         replace(v, "y_high = [1.0, 0.0]", "y_high = [0.0, 0.0]") + body +
+             "[contact]\nmodel = \"hertz_mindlin\"\nyoung_modulus = 1e9\n",
+         {},
+         f,
+         22,
+         "contact.impact_velocity",
+         "give contact.impact_velocity"},
+        {"set_hertz_on_a_linear_case",
+         v + body + "[contact]\nstiffness = 1e6\n",
+         {"contact.model=hertz_mindlin"},
+         f,
+         23,
+         "contact.stiffness",
+         "only contact.model = \"linear\" takes this key"},
         {"set_syntax", v, {"time.dt"}, "--set", 0, "time.dt", "expected section.key=value"},
         {"set_unknown_key", v, {"time.dtt=1"}, "--set", 0, "time.dtt", "did you mean 'time.dt'"},
         {"set_key_with_word_added",
@@ -397,6 +486,45 @@ TEST(CaseReader, ContactStiffnessAndSubstepsAreDerivedFromRestitutionAndDuration
     const double pair = M_PI * std::sqrt(0.5 * mass / c.contact_stiffness);
     EXPECT_EQ(c.contact_substeps, static_cast<int>(std::ceil(80.0 * 0.01 / pair)));
     EXPECT_NE(c.as_run.find("contact_substeps"), std::string::npos);
+}
+
+TEST(CaseReader, HertzMindlinSurfacesImpactSpeedAndSubstepsAreDerived)
+{
+    const std::string text =
+        replace(valid_case, "viscosity = 0.01", "viscosity = 0.01\ngravity = [0.0, -10.0]") +
+        "[[bodies]]\ndiameter = 0.5\ndensity = 2.0\nposition = [0.5, 1.0]\nfriction = 0.4\n"
+        "[contact]\nmodel = \"hertz_mindlin\"\nyoung_modulus = 1e6\nfriction = 0.1\n"
+        "restitution = 0.5\nrolling_friction = 0.01\n";
+    const CaseConfig c = read_case_string(text, "hertz.toml", {});
+    // Surfaces: a body's own value, else [contact]'s; ν defaults to 0.3.
+    EXPECT_EQ(c.bodies[0].material.friction, 0.4);
+    EXPECT_EQ(c.wall_material.friction, 0.1);
+    EXPECT_EQ(c.bodies[0].material.rolling_friction, 0.01);
+    EXPECT_EQ(c.bodies[0].material.restitution, 0.5);
+    EXPECT_EQ(c.wall_material.young_modulus, 1e6);
+    EXPECT_EQ(c.wall_material.poisson_ratio, 0.3);
+    // Impact speed: √(2 |g| L) + 2 · 0 (bodies at rest) + 1 (the lid), L = 2.
+    EXPECT_NEAR(c.contact_impact_velocity, std::sqrt(40.0) + 1.0, 1e-12);
+    // The shortest collision is two such bodies (m* = m/2, R* = R/2) rather than one and a
+    // wall (m, R): t_c ∝ (m*²/R*)^{1/5}. 80 sub-steps in it.
+    const double mass = 2.0 * M_PI * 0.0625;
+    const Material& surface = c.bodies[0].material;
+    const PairSide body = ball_side(mass, 0.5 * mass * 0.0625, 0.25, surface, true);
+    const HertzMindlin hertz;
+    const double pair =
+        hertz.elastic_collision_time(make_contact_pair(body, body), c.contact_impact_velocity);
+    const double wall = hertz.elastic_collision_time(
+        make_contact_pair(body, wall_side(c.wall_material)), c.contact_impact_velocity);
+    EXPECT_LT(pair, wall);
+    EXPECT_EQ(c.contact_substeps, static_cast<int>(std::ceil(80.0 * 0.01 / pair)));
+    EXPECT_NEAR(c.contact_duration, wall, 1e-15); // recorded: the wall collision
+    EXPECT_NEAR(c.contact_restitution, 0.5, 1e-15);
+    for (const char* key : {"contact_impact_velocity", "contact_damping_constant",
+                            "contact_duration", "contact_substeps"}) {
+        EXPECT_NE(c.as_run.find(key), std::string::npos) << key;
+    }
+    // The case as run reads back to the same case.
+    EXPECT_EQ(read_case_string(c.as_run, "case.toml", {}).contact_substeps, c.contact_substeps);
 }
 
 TEST(CaseReader, MissingFileIsAnInputError)

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The state of the contacts that persists from one sub-step and time step to the next: the
+/// elastic tangential displacement ξ of each open contact (tangential_contact.hpp). Plain data,
+/// owned by the caller (Simulation), so that a checkpoint can write and read it as it is.
+/// An entry lives exactly as long as its contact: the DEM step rebuilds the list at every force
+/// evaluation from the contacts that are open, so a contact that opens is dropped.
+
+#include "fddem/core/vec.hpp"
+
+#include <algorithm>
+#include <compare>
+#include <vector>
+
+namespace fddem {
+
+/// Which two things touch: body `first` (an index into the bodies) and `second`, another body's
+/// index (> first) or, if negative, a wall: −1 − (2·axis + side), side 0 the low wall.
+struct ContactKey {
+    int first = 0;
+    int second = 0;
+
+    auto operator<=>(const ContactKey&) const = default;
+    [[nodiscard]] bool is_wall() const noexcept { return second < 0; }
+};
+
+[[nodiscard]] inline ContactKey wall_contact_key(int body, int axis, int side) noexcept
+{
+    return {body, -1 - (2 * axis + side)};
+}
+
+template <int Dim>
+struct TangentialSpring {
+    ContactKey key;
+    Vec<Dim> displacement = Vec<Dim>::Zero(); ///< ξ [m]
+
+    /// Lists the members for a checkpoint archive (io/checkpoint_archive.hpp).
+    template <class Self, class Archive>
+    static void visit(Self& s, Archive& archive)
+    {
+        archive("spring.first", s.key.first);
+        archive("spring.second", s.key.second);
+        archive("spring.displacement", s.displacement);
+    }
+};
+
+template <int Dim>
+struct ContactHistory {
+    std::vector<TangentialSpring<Dim>> springs; ///< sorted by key, one per open contact
+
+    /// The spring of `key`, or nullptr if the contact has none (it just closed, or is
+    /// frictionless).
+    [[nodiscard]] const TangentialSpring<Dim>* find(const ContactKey& key) const
+    {
+        const auto at = std::lower_bound(
+            springs.begin(), springs.end(), key,
+            [](const TangentialSpring<Dim>& s, const ContactKey& k) { return s.key < k; });
+        return at != springs.end() && at->key == key ? &*at : nullptr;
+    }
+};
+
+} // namespace fddem

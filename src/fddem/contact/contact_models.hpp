@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The registry of contact models (STYLE.md §6): the only list of the models a case can name in
+/// `contact.model`, each with its factory and its source. `none` turns collisions off.
+
+#include "fddem/contact/hertz_mindlin.hpp"
+#include "fddem/contact/linear_spring_dashpot.hpp"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace fddem {
+
+/// Dispatched once per force evaluation (std::visit), never inside the pair loop.
+using AnyContactModel = std::variant<LinearSpringDashpot, HertzMindlin>;
+
+/// Everything a factory may need from the case.
+struct ContactModelInput {
+    LinearSpringDashpot::Params linear{1.0, 0.0}; ///< k, c, κ of the linear model
+    double reference_mass = 1.0; ///< lightest movable body [kg]: the linear model's checks
+};
+
+struct ContactModelEntry {
+    std::string_view name;     ///< the case-file name
+    std::string_view citation; ///< where the force law comes from
+    /// The model, or nothing for a case without collisions.
+    std::optional<AnyContactModel> (*make)(const ContactModelInput&);
+};
+
+[[nodiscard]] std::span<const ContactModelEntry> contact_models();
+[[nodiscard]] std::vector<std::string> contact_model_names();
+/// The model registered as `name`; throws InternalError for a name not in the registry (the
+/// case reader has already checked it against contact_model_names()).
+[[nodiscard]] std::optional<AnyContactModel> make_contact_model(std::string_view name,
+                                                                const ContactModelInput& input);
+
+/// The shortest undamped binary collision [s] at impact speed `impact_speed` [m/s] among `bodies`
+/// (each against itself, i.e. two alike, and against every other) and, if `wall` is given,
+/// each against a wall. Pairs that cannot move (both immovable) are left out; sets the DEM
+/// sub-steps. Returns +∞ if no pair can collide.
+[[nodiscard]] double shortest_collision(const AnyContactModel& model,
+                                        std::span<const PairSide> bodies,
+                                        const std::optional<Material>& wall, double impact_speed);
+
+} // namespace fddem
