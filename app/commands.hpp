@@ -25,7 +25,14 @@ struct RunOptions {
     bool quiet = false;
 };
 
+struct ValidateOptions {
+    std::string output_directory = "validation"; ///< report.md, PNGs and the run directories
+    bool quick = false;                          ///< the CI-sized set (a few minutes)
+};
+
 int run_command(const RunOptions& options);
+/// Runs tools/validate.py on this program; its exit status: 0 every check passes, 1 not.
+int validate_command(const ValidateOptions& options);
 int info_command(bool keys, bool markdown);
 
 } // namespace fddem::app

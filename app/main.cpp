@@ -63,6 +63,14 @@ int main(int argc, char** argv)
     info_cmd->add_flag("--keys", keys, "Print every case key with type, unit, default, range, doc");
     info_cmd->add_flag("--markdown", markdown, "With --keys: Markdown (docs/case-file.md)");
 
+    ValidateOptions validate;
+    CLI::App* validate_cmd = app.add_subcommand(
+        "validate", "Run the verification and validation cases against their references; "
+                    "writes DIR/report.md with plots");
+    validate_cmd->add_flag("--quick", validate.quick, "The few-minute set (run in CI)");
+    validate_cmd->add_option("-o,--output", validate.output_directory,
+                             "Report directory (default: validation)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -94,6 +102,9 @@ int main(int argc, char** argv)
     try {
         if (*run_cmd) {
             return run_command(run);
+        }
+        if (*validate_cmd) {
+            return validate_command(validate);
         }
         return info_command(keys, markdown);
     } catch (const fddem::InputError& e) {

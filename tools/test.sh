@@ -16,6 +16,8 @@ cmake --preset release >/dev/null
 cmake --build --preset release -j "$jobs"
 echo "== tests: unit|verification|regression"
 ctest --preset release -j "$jobs"
+echo "== fddem validate --quick (report: build/release/validation/report.md)"
+./build/release/app/fddem validate --quick -o build/release/validation
 if [ "${1:-}" = "--sanitize" ]; then
     echo "== dev build (ASan + UBSan)"
     cmake --preset dev >/dev/null
