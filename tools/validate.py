@@ -207,7 +207,8 @@ def all_checks():
         cavity_check("cavity Re 1000, 128²", 1000, 128, False),
         settling_check("settling disk, paper Fig. 4 (h = D/32)",
                        "cases/paper/fig04_settling_channel_fine/case.toml", [], 0.035, False),
-        towed_check("towed cylinder, Stokes drag (h = D/32)", 2, 0.04, False),
+        # (the towed cylinder at D/32 needs N_a = 12, which --set cannot reach: it is the
+        # validation test TowedCylinder.DragApproachesFaxenWithRefinement)
         pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.02, False),
         pile_check("100 disks settle", "cases/benchmarks/sedimentation_100_disks/case.toml", 0.05, False),
     ]
