@@ -153,7 +153,8 @@ def pile_check(name, case, overlap_bound, quick):
         last = [(p["x"][-1], p["y"][-1], math.hypot(p["u"][-1], p["v"][-1])) for p in particles.values()]
         inside = sum(1 for x, y, _ in last if 0.0 < x < 2.0 and 0.0 < y < 6.0)
         return [("max overlap / r", summary["max_relative_overlap"], 0.0, overlap_bound,
-                 "the issue's bound for the pile"),
+                 "the issue's bound for a long run is 5 %; the chaotic 18-disk pile gave 0.6-2.1 % "
+                 "in runs differing only in round-off"),
                 ("disks outside the box", len(last) - inside, 0.0, 0.5, "none may leave"),
                 ("mean final speed", float(np.mean([s for *_, s in last])), 0.0, 1e-3, "settled")]
 
@@ -209,7 +210,7 @@ def all_checks():
                        "cases/paper/fig04_settling_channel_fine/case.toml", [], 0.035, False),
         # (the towed cylinder at D/32 needs N_a = 12, which --set cannot reach: it is the
         # validation test TowedCylinder.DragApproachesFaxenWithRefinement)
-        pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.02, False),
+        pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.03, False),
         pile_check("100 disks settle", "cases/benchmarks/sedimentation_100_disks/case.toml", 0.05, False),
     ]
     if os.path.isdir(SHARED_UHLMANN):
