@@ -17,6 +17,14 @@ def read_summary(run_dir):
         return json.load(f)
 
 
+def run_costs(run_dir):
+    """(steps, seconds stepping, seconds by phase, outer iterations, summary) of one run."""
+    rows = read_solver_csv(run_dir)
+    summary = read_summary(run_dir)
+    outer = sum(int(r["outer_iterations"]) for r in rows)
+    return len(rows), summary["wall_seconds_stepping"], summary["wall_seconds_by_phase"], outer, summary
+
+
 def cavity_table(entries):
     print(
         f"{'grid':>6} {'steps':>6} {'ms/step':>8} {'ns/cell/step':>13} {'outer/step':>10} "
@@ -25,12 +33,7 @@ def cavity_table(entries):
     for entry in entries:
         n, run_dir = entry.split(":", 1)
         n = int(n)
-        rows = read_solver_csv(run_dir)
-        summary = read_summary(run_dir)
-        steps = len(rows)
-        phases = summary["wall_seconds_by_phase"]
-        stepping = summary["wall_seconds_stepping"]
-        outer = sum(int(r["outer_iterations"]) for r in rows)
+        steps, stepping, phases, outer, summary = run_costs(run_dir)
         print(
             f"{n:>5}² {steps:>6} {1e3 * stepping / steps:>8.3f} "
             f"{1e9 * stepping / steps / n / n:>13.1f} {outer / steps:>10.2f} "
@@ -48,12 +51,7 @@ def paper_table(entries):
     )
     for entry in entries:
         name, run_dir = entry.split(":", 1)
-        rows = read_solver_csv(run_dir)
-        summary = read_summary(run_dir)
-        steps = len(rows)
-        phases = summary["wall_seconds_by_phase"]
-        stepping = summary["wall_seconds_stepping"]
-        outer = sum(int(r["outer_iterations"]) for r in rows)
+        steps, stepping, phases, outer, summary = run_costs(run_dir)
         fluid = phases.get("momentum", 0) + phases.get("pressure", 0)
         print(
             f"{name:<24} {steps:>6} {stepping:>8.2f} {1e3 * stepping / steps:>8.2f} "

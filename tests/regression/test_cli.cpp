@@ -11,37 +11,27 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "support/files_and_programs.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-    int status;
-    std::string output; ///< stdout and stderr
-};
+using Result = fddem::test::ProgramResult;
 
 Result run(const std::string& arguments)
 {
     const fs::path log = fs::temp_directory_path() / ("fddem_cli_" + std::to_string(::getpid()));
-    const std::string command =
-        std::string(FDDEM_EXECUTABLE) + " " + arguments + " > " + log.string() + " 2>&1";
-    const int raw = std::system(command.c_str());
-    std::ifstream in(log);
-    std::stringstream text;
-    text << in.rdbuf();
+    Result result = fddem::test::run_fddem(arguments, log);
     fs::remove(log);
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+    return result;
 }
 
 class Cli : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        root_ = fs::temp_directory_path() /
-                ("fddem_cli_test_" + std::to_string(::getpid()) + "_" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(root_);
-        fs::create_directories(root_);
+        root_ = fddem::test::fresh_test_directory("fddem_cli_test_");
         case_file_ = root_ / "cavity.toml";
         std::ofstream(case_file_) << R"([domain]
 size = [1.0, 1.0]

@@ -30,6 +30,8 @@
 
 extern char** environ; // NOLINT: POSIX, for posix_spawn
 
+#include "support/files_and_programs.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -85,18 +87,8 @@ keep = 100
 
 constexpr int checkpoint_interval = 5;
 
-struct Result {
-    int status = -1;
-    std::string output; ///< stdout and stderr
-};
-
-std::string contents(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
+using Result = fddem::test::ProgramResult;
+using fddem::test::file_contents;
 
 std::vector<std::string> lines_of(const std::string& text)
 {
@@ -114,7 +106,7 @@ std::map<std::string, std::string> snapshot(const fs::path& root)
     std::map<std::string, std::string> files;
     for (const auto& entry : fs::recursive_directory_iterator(root)) {
         if (entry.is_regular_file()) {
-            files[fs::relative(entry.path(), root).string()] = contents(entry.path());
+            files[fs::relative(entry.path(), root).string()] = file_contents(entry.path());
         }
     }
     return files;
@@ -122,7 +114,7 @@ std::map<std::string, std::string> snapshot(const fs::path& root)
 
 long step_of_last_row(const fs::path& solver_csv)
 {
-    const std::vector<std::string> rows = lines_of(contents(solver_csv));
+    const std::vector<std::string> rows = lines_of(file_contents(solver_csv));
     return rows.size() < 2 ? 0 : std::stol(rows.back().substr(0, rows.back().find(',')));
 }
 
@@ -130,11 +122,7 @@ class Restart : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        root_ = fs::temp_directory_path() /
-                ("fddem_restart_test_" + std::to_string(::getpid()) + "_" +
-                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(root_);
-        fs::create_directories(root_);
+        root_ = fddem::test::fresh_test_directory("fddem_restart_test_");
         case_file_ = root_ / "three_disks.toml";
         std::ofstream(case_file_) << three_disks;
         log_ = root_ / "fddem.log";
@@ -144,10 +132,7 @@ protected:
     /// Runs fddem to its end.
     Result run(const std::string& arguments) const
     {
-        const std::string command =
-            std::string(FDDEM_EXECUTABLE) + " " + arguments + " > " + log_.string() + " 2>&1";
-        const int raw = std::system(command.c_str());
-        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, contents(log_)};
+        return fddem::test::run_fddem(arguments, log_);
     }
 
     /// Starts `fddem run -q` of the case into `directory` without waiting.
@@ -223,7 +208,7 @@ protected:
 /// solver.csv without the wall_seconds column (the last), which no two runs share.
 std::vector<std::string> solver_rows_without_wall_time(const fs::path& run)
 {
-    std::vector<std::string> rows = lines_of(contents(run / "solver.csv"));
+    std::vector<std::string> rows = lines_of(file_contents(run / "solver.csv"));
     for (std::string& row : rows) {
         row = row.substr(0, row.rfind(','));
     }
@@ -235,14 +220,16 @@ void expect_same_outputs(const fs::path& reference, const fs::path& continued)
 {
     EXPECT_EQ(solver_rows_without_wall_time(reference), solver_rows_without_wall_time(continued))
         << continued;
-    EXPECT_TRUE(contents(reference / "particles.csv") == contents(continued / "particles.csv"))
+    EXPECT_TRUE(file_contents(reference / "particles.csv") ==
+                file_contents(continued / "particles.csv"))
         << continued;
     for (const char* folder : {"fields", "particles", "samples"}) {
         std::vector<std::string> a;
         std::vector<std::string> b;
         for (const auto& f : fs::directory_iterator(reference / folder)) {
             a.push_back(f.path().filename().string());
-            EXPECT_TRUE(contents(f.path()) == contents(continued / folder / f.path().filename()))
+            EXPECT_TRUE(file_contents(f.path()) ==
+                        file_contents(continued / folder / f.path().filename()))
                 << continued / folder / f.path().filename();
         }
         for (const auto& f : fs::directory_iterator(continued / folder)) {
@@ -253,14 +240,14 @@ void expect_same_outputs(const fs::path& reference, const fs::path& continued)
         EXPECT_EQ(a, b) << folder;
     }
     for (const char* file : {"fields.pvd", "particles.pvd"}) {
-        EXPECT_EQ(contents(reference / file), contents(continued / file)) << file;
+        EXPECT_EQ(file_contents(reference / file), file_contents(continued / file)) << file;
     }
 }
 
 /// Does particles.csv show a contact force on some body in the step ending at `step`?
 bool has_contact_at(const fs::path& run, long step)
 {
-    const std::vector<std::string> rows = lines_of(contents(run / "particles.csv"));
+    const std::vector<std::string> rows = lines_of(file_contents(run / "particles.csv"));
     // One row per body per step (particle_interval 0): 3 rows per step after the initial ones.
     bool contact = false;
     for (std::size_t k = 1; k < rows.size(); ++k) {
@@ -312,7 +299,7 @@ TEST_F(Restart, RunStoppedByStepLimitIsExtendedToTheSameResults)
               std::string::npos)
         << r.output;
     expect_same_outputs(ref, part);
-    EXPECT_NE(contents(part / "case.toml").find("max_steps = 100000000"), std::string::npos);
+    EXPECT_NE(file_contents(part / "case.toml").find("max_steps = 100000000"), std::string::npos);
 }
 
 TEST_F(Restart, FinishedFluidRunExtendedToALaterEndIsTheLongerRun)
@@ -352,11 +339,13 @@ points = 17
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_EQ(solver_rows_without_wall_time(longer), solver_rows_without_wall_time(extended));
     for (const auto& f : fs::directory_iterator(longer / "fields")) {
-        EXPECT_TRUE(contents(f.path()) == contents(extended / "fields" / f.path().filename()))
+        EXPECT_TRUE(file_contents(f.path()) ==
+                    file_contents(extended / "fields" / f.path().filename()))
             << f.path().filename();
     }
-    EXPECT_EQ(contents(longer / "fields.pvd"), contents(extended / "fields.pvd"));
-    EXPECT_EQ(contents(longer / "samples/centre.csv"), contents(extended / "samples/centre.csv"));
+    EXPECT_EQ(file_contents(longer / "fields.pvd"), file_contents(extended / "fields.pvd"));
+    EXPECT_EQ(file_contents(longer / "samples/centre.csv"),
+              file_contents(extended / "samples/centre.csv"));
 }
 
 TEST_F(Restart, KilledRunRestartsToTheSameResults)
@@ -390,7 +379,7 @@ TEST_F(Restart, TerminatedRunWritesACheckpointAndExitsWith143)
     ::waitpid(pid, &raw, 0);
     ASSERT_TRUE(WIFEXITED(raw));
     EXPECT_EQ(WEXITSTATUS(raw), 128 + SIGTERM);
-    const std::string output = contents(log_);
+    const std::string output = file_contents(log_);
     EXPECT_NE(output.find("interrupted by SIGTERM"), std::string::npos) << output;
     EXPECT_NE(output.find("continue with: fddem run --restart " + stopped.string()),
               std::string::npos)
@@ -401,7 +390,8 @@ TEST_F(Restart, TerminatedRunWritesACheckpointAndExitsWith143)
                            ("checkpoint_" + std::string(10 - std::to_string(last).size(), '0') +
                             std::to_string(last) + ".ckpt")))
         << "step " << last;
-    EXPECT_NE(contents(stopped / "summary.json").find("interrupted by SIGTERM"), std::string::npos);
+    EXPECT_NE(file_contents(stopped / "summary.json").find("interrupted by SIGTERM"),
+              std::string::npos);
     const Result r = run("run --restart " + stopped.string() + " -q");
     ASSERT_EQ(r.status, 0) << r.output;
     expect_same_outputs(ref, stopped);
@@ -412,7 +402,7 @@ TEST_F(Restart, DamagedNewestCheckpointFallsBackToThePreviousOne)
     const fs::path ref = reference();
     const fs::path copy = copy_stopped_at(ref, 35, "damaged");
     const fs::path newest = copy / "checkpoints/checkpoint_0000000035.ckpt";
-    std::string bytes = contents(newest);
+    std::string bytes = file_contents(newest);
     bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 0x01);
     std::ofstream(newest, std::ios::binary | std::ios::trunc) << bytes;
     const Result r = run("run --restart " + copy.string() + " -q");
@@ -497,7 +487,7 @@ TEST_P(RestartBadInput, ExitsWithStatusTwoAndChangesNothing)
     fs::create_directories(root_ / "no_checkpoints");
     fs::copy_file(dir / "case.toml", root_ / "no_checkpoints/case.toml");
     if (!bad.edit_from.empty()) {
-        std::string text = contents(dir / "case.toml");
+        std::string text = file_contents(dir / "case.toml");
         ASSERT_NE(text.find(bad.edit_from), std::string::npos);
         text.replace(text.find(bad.edit_from), bad.edit_from.size(), bad.edit_to);
         std::ofstream(dir / "case.toml", std::ios::trunc) << text;

@@ -394,6 +394,7 @@ StepReport Simulation<Dim>::advance()
 
     StepReport report;
     if (dem_) {
+        // eq. (18): the DEM sub-steps over the whole step, before the SIMPLE loop (§2.3).
         const auto start = std::chrono::steady_clock::now();
         resolve_contacts(dt, report);
         contact_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();

@@ -17,6 +17,8 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "support/files_and_programs.hpp"
+
 namespace fddem {
 namespace {
 
@@ -29,14 +31,6 @@ fs::path scratch(const std::string& name)
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
-}
-
-std::string read_bytes(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 void write_bytes(const fs::path& path, const std::string& bytes)
@@ -338,7 +332,7 @@ protected:
         static_cast<void>(sim.advance());
         file_ = dir_ / "state.ckpt";
         write_checkpoint(file_, sim, RunRecord{});
-        bytes_ = read_bytes(file_);
+        bytes_ = test::file_contents(file_);
     }
     void TearDown() override { fs::remove_all(dir_); }
 

@@ -12,18 +12,12 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "support/files_and_programs.hpp"
+
 namespace fddem {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string contents(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 class History : public ::testing::Test {
 protected:
@@ -57,7 +51,7 @@ TEST_F(History, CutBackAndContinuedItReadsAsOneHistory)
         EXPECT_EQ(history.size(), after_two);
         history.append({3.0, 1.25});
     }
-    EXPECT_EQ(contents(path_), "step,time\n1,0.5\n2,1\n3,1.25\n");
+    EXPECT_EQ(test::file_contents(path_), "step,time\n1,0.5\n2,1\n3,1.25\n");
 }
 
 TEST_F(History, HistoryThatDoesNotHoldTheCheckpointsRowsIsRefused)

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Helpers for tests that look at files and run the fddem program: a file read whole, a fresh
+/// scratch directory per test, and `fddem …` run through the shell with its output captured.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fddem::test {
+
+/// The whole file, bytes as they are ("" if it cannot be read).
+inline std::string file_contents(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+/// An empty directory under the system's temporary directory, named after `prefix`, the
+/// process and the running test, so that parallel tests never share one.
+inline std::filesystem::path fresh_test_directory(const std::string& prefix)
+{
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() /
+        (prefix + std::to_string(::getpid()) + "_" +
+         ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+struct ProgramResult {
+    int status = -1;    ///< exit status, −1 if the program did not exit normally
+    std::string output; ///< stdout and stderr
+};
+
+/// Runs `fddem ARGUMENTS` (the build's program) to its end, stdout and stderr into `log`.
+inline ProgramResult run_fddem(const std::string& arguments, const std::filesystem::path& log)
+{
+    const std::string command =
+        std::string(FDDEM_EXECUTABLE) + " " + arguments + " > " + log.string() + " 2>&1";
+    const int raw = std::system(command.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, file_contents(log)};
+}
+
+} // namespace fddem::test
