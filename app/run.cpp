@@ -150,16 +150,17 @@ int Run<Dim>::step_to_end()
     progress_.finish();
     record_.wall_seconds = wall_seconds();
     if (!failure.empty()) {
-        write_summary("failed: " + failure);
+        // The simulation is back at the end of the last good step (Simulation::advance): its
+        // fields and samples close the outputs, and its checkpoint lets the run go on from
+        // there, with a smaller Δt say.
+        const Clock& clock = sim_.clock();
+        close_outputs("failed: " + failure);
         std::fprintf(stderr,
-                     "fddem: numerical failure at %s\n  outputs up to the last step are in %s\n",
-                     failure.c_str(), directory_.c_str());
-        if (!last_checkpoint_.empty()) {
-            std::fprintf(stderr,
-                         "  the last checkpoint is %s; continue from it with: fddem run --restart "
-                         "%s (--set changes keys, e.g. a smaller time.dt)\n",
-                         last_checkpoint_.c_str(), directory_.c_str());
-        }
+                     "fddem: numerical failure at %s\n  the outputs up to the last good step "
+                     "(step %ld, t = %.6g s) are in %s,\n  with a checkpoint of that state, "
+                     "%s; continue from it with: fddem run --restart %s --set time.dt=...\n",
+                     failure.c_str(), clock.step, clock.time, directory_.c_str(),
+                     last_checkpoint_.c_str(), directory_.c_str());
         return exit_numerical_failure;
     }
     if (signal != 0) {
@@ -172,20 +173,28 @@ int Run<Dim>::step_to_end()
                      last_checkpoint_.c_str(), directory_.c_str());
         return exit_interrupted_base + signal;
     }
-    const std::size_t n_frames = pvd_.entries().size();
-    if (pvd_.entries().empty() || pvd_.entries().back().first < sim_.clock().time) {
-        write_fields();
-    }
-    write_samples();
-    write_summary("completed");
-    // Lets `fddem run --restart DIR --set time.end=…` extend a finished run.
-    write_checkpoint_now(n_frames);
+    // Its checkpoint lets `fddem run --restart DIR --set time.end=…` extend a finished run.
+    close_outputs("completed");
     std::fprintf(stderr,
                  "fddem: %s: %ld steps to t = %.6g s, %ld outer iterations, %.2f s; results in "
                  "%s\n",
                  config_.source_file.c_str(), sim_.clock().step, sim_.clock().time,
                  record_.total_outer_iterations, record_.wall_seconds, directory_.c_str());
     return exit_success;
+}
+
+template <int Dim>
+void Run<Dim>::close_outputs(const std::string& status)
+{
+    // A closing field frame off the output schedule is left out of the checkpoint's frames:
+    // a continued run drops it and writes its frames on the schedule.
+    const std::size_t n_frames = pvd_.entries().size();
+    if (pvd_.entries().empty() || pvd_.entries().back().first < sim_.clock().time) {
+        write_fields();
+    }
+    write_samples();
+    write_summary(status);
+    write_checkpoint_now(n_frames);
 }
 
 template <int Dim>

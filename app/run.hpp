@@ -42,6 +42,9 @@ private:
     static std::vector<std::string> particle_columns();
 
     int step_to_end();
+    /// The outputs at the end of a run (completed or failed): the closing field frame, the line
+    /// samples, summary.json with `status`, and a checkpoint.
+    void close_outputs(const std::string& status);
     /// Checkpoint at the end of the current step; the first `n_frames` frames of each .pvd
     /// are recorded as the run's (the end-of-run frame outside output.field_interval is not).
     void write_checkpoint_now(std::size_t n_frames);

@@ -135,7 +135,7 @@ double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
             u_old[o] = ua[o];
             const double residual =
                 b - (p[o] - p[o - s_axis]) * pressure_factor + neighbours - a_p * ua[o];
-            row_max = std::max(row_max, std::abs(residual) / a_p);
+            row_max = max_keeping_nan(row_max, std::abs(residual) / a_p);
         }
         return row_max;
     });

@@ -6,7 +6,9 @@
 #include "fddem/core/index.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -73,6 +75,13 @@ void for_each_cell_in_vtk_order(const Box<Dim>& box, F&& f)
     }
 }
 
+/// max(a, b) of values ≥ 0 that reads a NaN b as +∞. std::max(a, NaN) and OpenMP's max
+/// reduction drop a NaN, and a blown-up residual would look converged.
+[[nodiscard]] inline double max_keeping_nan(double a, double b) noexcept
+{
+    return std::isnan(b) ? std::numeric_limits<double>::infinity() : std::max(a, b);
+}
+
 /// Max over `box` of g(index) (g ≥ 0); the one reduction that becomes an MPI_Allreduce.
 template <int Dim, class G>
 [[nodiscard]] double max_over(const Box<Dim>& box, G&& g)
@@ -83,7 +92,7 @@ template <int Dim, class G>
 #pragma omp parallel for schedule(static) reduction(max : result) if (is_threaded)
         for (int j = box.lo[1]; j < box.hi[1]; ++j) {
             for (int i = box.lo[0]; i < box.hi[0]; ++i) {
-                result = std::max(result, g(Index<2>{i, j}));
+                result = max_keeping_nan(result, g(Index<2>{i, j}));
             }
         }
     } else {
@@ -91,7 +100,7 @@ template <int Dim, class G>
         for (int k = box.lo[2]; k < box.hi[2]; ++k) {
             for (int j = box.lo[1]; j < box.hi[1]; ++j) {
                 for (int i = box.lo[0]; i < box.hi[0]; ++i) {
-                    result = std::max(result, g(Index<3>{i, j, k}));
+                    result = max_keeping_nan(result, g(Index<3>{i, j, k}));
                 }
             }
         }
@@ -110,13 +119,13 @@ template <int Dim, class G>
     if constexpr (Dim == 2) {
 #pragma omp parallel for schedule(static) reduction(max : result) if (is_threaded)
         for (int j = rows.lo[1]; j < rows.hi[1]; ++j) {
-            result = std::max(result, g(Index<2>{rows.lo[0], j}));
+            result = max_keeping_nan(result, g(Index<2>{rows.lo[0], j}));
         }
     } else {
 #pragma omp parallel for schedule(static) reduction(max : result) if (is_threaded)
         for (int k = rows.lo[2]; k < rows.hi[2]; ++k) {
             for (int j = rows.lo[1]; j < rows.hi[1]; ++j) {
-                result = std::max(result, g(Index<3>{rows.lo[0], j, k}));
+                result = max_keeping_nan(result, g(Index<3>{rows.lo[0], j, k}));
             }
         }
     }

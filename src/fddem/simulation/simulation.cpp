@@ -9,6 +9,8 @@
 #include "fddem/fluid/pressure_correction.hpp"
 #include "fddem/grid/loops.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -160,7 +162,7 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
             }
         }
     }
-    place_markers();
+    place_markers(0, 0.0);
     set_uniform_body_force(force);
     fill_velocity_ghosts(grid_, bc_, state_.u);
     fill_cell_ghosts(grid_, bc_, state_.p);
@@ -190,7 +192,7 @@ void Simulation<Dim>::set_uniform_body_force(const Vec<Dim>& force)
 }
 
 template <int Dim>
-void Simulation<Dim>::place_markers()
+void Simulation<Dim>::place_markers(long step, double time)
 {
     std::visit(
         [&](auto kernel) {
@@ -198,6 +200,11 @@ void Simulation<Dim>::place_markers()
             for (std::size_t b = 0; b < bodies_.size(); ++b) {
                 const RigidBody<Dim>& body = bodies_[b];
                 BodyCoupling<Dim>& c = couplings_[b];
+                if (!body.centre.allFinite() || !body.velocity.allFinite()) {
+                    throw NumericalError(step, time, "body " + std::to_string(b),
+                                         "the body's motion is not finite: the coupling has "
+                                         "blown up");
+                }
                 for (std::size_t l = 0; l < c.markers.size(); ++l) {
                     const Vec<Dim>& r = c.markers.offsets[l];
                     if constexpr (Dim == 2) {
@@ -209,9 +216,13 @@ void Simulation<Dim>::place_markers()
                     }
                     c.positions[l] = body.centre + c.offsets[l];
                     if (!fits_in_storage<Dim, Kernel>(grid_, c.positions[l])) {
-                        throw NumericalError(clock_.step, clock_.time, "body " + std::to_string(b),
-                                             "a marker of the body left the box (its kernel "
-                                             "support reaches past the ghost layers)");
+                        throw NumericalError(
+                            step, time, "body " + std::to_string(b),
+                            fmt::format("a marker of the body left the box (its kernel support "
+                                        "reaches past the ghost layers): centre ({:.6g}), "
+                                        "velocity ({:.6g})",
+                                        fmt::join(body.centre, ", "),
+                                        fmt::join(body.velocity, ", ")));
                     }
                 }
             }
@@ -378,6 +389,58 @@ double Simulation<Dim>::reference_velocity() const
 template <int Dim>
 StepReport Simulation<Dim>::advance()
 {
+    // One grid array and the (small) body state per step: cheap beside the step itself.
+    step_start_.p = state_.p;
+    step_start_.bodies = bodies_;
+    step_start_.couplings = couplings_;
+    step_start_.contacts = contact_history_;
+    try {
+        return advance_unguarded();
+    } catch (const NumericalError&) {
+        roll_back_step();
+        throw;
+    }
+}
+
+template <int Dim>
+void Simulation<Dim>::roll_back_step()
+{
+    for (int a = 0; a < Dim; ++a) {
+        state_.u[a] = state_.u_n[a];        // advance() moved u^n here
+        state_.u_n[a] = previous_level_[a]; // and u^{n−1} here
+    }
+    state_.p = step_start_.p;
+    state_.p_corr.fill(0.0); // only hypre's initial guess
+    state_.divergence.fill(0.0);
+    bodies_ = step_start_.bodies;
+    couplings_ = step_start_.couplings;
+    contact_history_ = step_start_.contacts;
+    is_reusable_assembly_ = false;
+    spread_marker_forces(); // the body force of the step's start, from its λ
+}
+
+template <int Dim>
+std::string Simulation<Dim>::locate_non_finite_velocity() const
+{
+    for (int a = 0; a < Dim; ++a) {
+        std::optional<Index<Dim>> found; // serial: the first in storage order
+        for_each_cell_in_vtk_order(grid_.face_box(a), [&](const Index<Dim>& c) {
+            if (!found && !std::isfinite(state_.u[a](c))) {
+                found = c;
+            }
+        });
+        if (found) {
+            const Vec<Dim> x = grid_.face_centre(a, *found);
+            return fmt::format("velocity component {} not finite at ({:.6g})", a,
+                               fmt::join(x, ", "));
+        }
+    }
+    return "the momentum residual is not finite";
+}
+
+template <int Dim>
+StepReport Simulation<Dim>::advance_unguarded()
+{
     const double dt = clock_.dt;
     for (int a = 0; a < Dim; ++a) {
         previous_level_[a] = state_.u_n[a];
@@ -423,8 +486,9 @@ StepReport Simulation<Dim>::advance()
         report.momentum_residual = momentum_residual / velocity_scale;
         report.mass_residual = mass_residual;
         if (!std::isfinite(report.momentum_residual)) {
-            throw NumericalError(clock_.step + 1, clock_.time + dt, "momentum equations",
-                                 "the momentum residual is not finite: the flow has blown up");
+            throw NumericalError(clock_.step + 1, clock_.time + dt,
+                                 fmt::format("momentum equations, outer iteration {}", k),
+                                 locate_non_finite_velocity() + ": the flow has blown up");
         }
         // Paper deviation (the paper does not state its test): with bodies, a step has
         // converged when the body velocities change by less than tolerance · U_ref from one
@@ -459,13 +523,13 @@ StepReport Simulation<Dim>::advance()
         // eqs. (13)–(16): rigid-body velocities, marker forces, the correction spread to u.
         if (has_bodies) {
             start = std::chrono::steady_clock::now();
+            const double scale = std::max(velocity_scale, reference_velocity());
             std::vector<Vec<Dim>> previous_velocity;
             std::vector<AngularVec<Dim>> previous_omega;
             for (const RigidBody<Dim>& body : bodies_) {
                 previous_velocity.push_back(body.velocity);
                 previous_omega.push_back(body.omega);
             }
-            const double scale = std::max(velocity_scale, reference_velocity());
             rigid_defect = update_bodies(dt) / scale;
             body_change = 0.0;
             for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -508,7 +572,7 @@ StepReport Simulation<Dim>::advance()
     report.courant = courant;
     if (has_bodies) {
         move_bodies(dt); // eq. (17)
-        place_markers();
+        place_markers(clock_.step + 1, clock_.time + dt);
         spread_marker_forces();
     }
     // Divided in two steps: U_ref² may underflow for a fluid at rest.

@@ -50,6 +50,9 @@ public:
     explicit Simulation(const CaseConfig& config);
 
     /// One implicit-Euler time step: SIMPLE outer iterations (7)–(12) to convergence.
+    /// Throws NumericalError if the step blows up (a non-finite residual, a body leaving the
+    /// box); the simulation is then back in the state it had before the step, exactly, so
+    /// that it can be checkpointed and continued (with a smaller Δt, say).
     StepReport advance();
 
     /// True when the end time or the step limit is reached, or the flow is steady.
@@ -184,8 +187,25 @@ private:
     /// After load_state: the marker arrays fit the markers; the case's Δt is adopted.
     void finish_load();
 
+    /// What a failed step must be able to give back (roll_back_step). u^n and u^{n−1} are
+    /// not here: the step keeps them in state_.u_n and previous_level_ anyway.
+    struct StepStart {
+        GridArray<Dim> p;
+        std::vector<RigidBody<Dim>> bodies;
+        std::vector<BodyCoupling<Dim>> couplings;
+        ContactHistory<Dim> contacts;
+    };
+    StepReport advance_unguarded();
+    /// Undoes a step that threw: the state of the step's start (except per-step scratch and
+    /// u^{n−2}, which only a reused assembly needs; the next step reassembles).
+    void roll_back_step();
+    /// Where the velocity first stops being finite, for the blow-up message.
+    [[nodiscard]] std::string locate_non_finite_velocity() const;
+
     [[nodiscard]] double reference_velocity() const;
-    void place_markers();
+    /// Puts the markers on the bodies; a marker whose kernel leaves the storage is a blow-up
+    /// of step `step` (ending at `time`).
+    void place_markers(long step, double time);
     double update_bodies(double dt);
     void spread_marker_forces();
     void move_bodies(double dt);
@@ -216,6 +236,7 @@ private:
     std::vector<DemBody<Dim>> dem_bodies_;
     /// The tangential springs of the open contacts, kept across time steps (to be checkpointed).
     ContactHistory<Dim> contact_history_;
+    StepStart step_start_;
     Vec<Dim> gravity_ = Vec<Dim>::Zero();
     Vec<Dim> uniform_force_ = Vec<Dim>::Zero();
     double coupling_seconds_ = 0.0;
