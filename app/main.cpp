@@ -42,8 +42,10 @@ int main(int argc, char** argv)
     CLI::Option* output_option = run_cmd->add_option(
         "-o,--output", run.output_directory,
         "Run directory (default: the case's output.directory, or runs/<case name>)");
-    run_cmd->add_option("--set", run.overrides,
-                        "Override a case key, section.key=value (repeatable)");
+    run_cmd->add_option(
+        "--set", run.overrides,
+        "Override a case key, section.key=value; bodies.N.key=value for body N (from 1), "
+        "bodies.key=value for every body (repeatable)");
     CLI::Option* force_option =
         run_cmd->add_flag("--force", run.force, "Overwrite an existing run directory");
     run_cmd

@@ -96,29 +96,48 @@ bool is_table_array(const std::string& section)
                        [&](const TableArraySpec& t) { return t.name == section; });
 }
 
-/// toml++ nests "output.lines" as table "output" with array "lines".
-const toml::array* find_table_array(const toml::table& doc, const std::string& path)
+/// toml++ nests "output.lines" as table "output" with array "lines". (Doc is a toml::table,
+/// const or not.)
+template <class Doc>
+auto* find_table_array(Doc& doc, const std::string& path)
 {
     const auto dot = path.find('.');
     if (dot == std::string::npos) {
-        return doc.get_as<toml::array>(path);
+        return doc.template get_as<toml::array>(path);
     }
-    const toml::table* parent = doc.get_as<toml::table>(path.substr(0, dot));
-    return parent == nullptr ? nullptr : parent->get_as<toml::array>(path.substr(dot + 1));
+    auto* parent = doc.template get_as<toml::table>(path.substr(0, dot));
+    return parent == nullptr ? nullptr : parent->template get_as<toml::array>(path.substr(dot + 1));
 }
 
+/// Splits "a.b.c" at its dots.
+std::vector<std::string> split_at_dots(const std::string& path)
+{
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    for (std::size_t dot = path.find('.'); dot != std::string::npos; dot = path.find('.', start)) {
+        parts.push_back(path.substr(start, dot - start));
+        start = dot + 1;
+    }
+    parts.push_back(path.substr(start));
+    return parts;
+}
+
+/// --set section.key=value; for an array of tables ([[bodies]], [[output.lines]]) also
+/// name.key=value (every entry) and name.N.key=value (entry N, counted from 1).
 void apply_override(toml::table& doc, const std::string& text, Locator& where)
 {
     const auto equals = text.find('=');
     const std::string path = equals == std::string::npos ? text : text.substr(0, equals);
-    const auto dot = path.find('.');
-    if (equals == std::string::npos || dot == std::string::npos || dot == 0 ||
-        dot + 1 >= path.size() || path.find('.', dot + 1) != std::string::npos) {
+    const std::vector<std::string> parts = split_at_dots(path);
+    const bool is_malformed =
+        equals == std::string::npos || parts.size() < 2 ||
+        std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); });
+    if (is_malformed) {
         throw InputError(override_source, 0, path,
-                         "expected section.key=value (e.g. time.dt=1e-3), got '" + text + "'");
+                         "expected section.key=value (e.g. time.dt=1e-3, bodies.1.density=2.5), "
+                         "got '" +
+                             text + "'");
     }
-    const std::string section = path.substr(0, dot);
-    const std::string name = path.substr(dot + 1);
     const std::string value = text.substr(equals + 1);
     toml::table parsed;
     try {
@@ -131,6 +150,50 @@ void apply_override(toml::table& doc, const std::string& text, Locator& where)
                              "cannot read the value '" + value +
                                  "': " + std::string(e.description()));
         }
+    }
+    const std::string& name = parts.back();
+    const bool has_index =
+        parts.size() >= 3 &&
+        std::all_of(parts[parts.size() - 2].begin(), parts[parts.size() - 2].end(),
+                    [](char c) { return c >= '0' && c <= '9'; });
+    std::string section;
+    for (std::size_t k = 0; k + (has_index ? 2 : 1) < parts.size(); ++k) {
+        section += (k == 0 ? "" : ".") + parts[k];
+    }
+    if (is_table_array(section)) {
+        toml::array* entries = find_table_array(doc, section);
+        const std::size_t count = entries == nullptr ? 0 : entries->size();
+        std::size_t first = 0;
+        std::size_t last = count;
+        if (has_index) {
+            const std::string& digits = parts[parts.size() - 2];
+            const std::size_t n = digits.size() > 6 ? 0 : std::stoul(digits);
+            if (n < 1 || n > count) {
+                throw InputError(override_source, 0, path,
+                                 fmt::format("the case has {} [[{}]] entr{} (counted from 1), "
+                                             "there is no {}",
+                                             count, section, count == 1 ? "y" : "ies", digits));
+            }
+            first = n - 1;
+            last = n;
+        } else if (count == 0) {
+            throw InputError(override_source, 0, path,
+                             "the case has no [[" + section + "]] entry to set it in");
+        }
+        for (std::size_t k = first; k < last; ++k) {
+            toml::table* entry = entries->get_as<toml::table>(k);
+            if (entry != nullptr) {
+                entry->insert_or_assign(name, *parsed.get("v"));
+            }
+        }
+        where.mark_overridden(section + "." + name);
+        return;
+    }
+    if (parts.size() != 2) {
+        throw InputError(override_source, 0, path,
+                         "expected section.key=value (e.g. time.dt=1e-3, bodies.1.density=2.5), "
+                         "got '" +
+                             text + "'");
     }
     toml::table* target = doc.get_as<toml::table>(section);
     if (target == nullptr) {

@@ -390,7 +390,9 @@ std::string describe_keys(bool markdown)
                "do not edit by hand.\n\n"
                "A case is a TOML file. Vectors have one entry per axis (2 or 3, set by "
                "`domain.size`). Values are dimensional, in any consistent unit system (SI "
-               "units are shown). `fddem run CASE --set section.key=value` overrides any key.\n";
+               "units are shown). `fddem run CASE --set section.key=value` overrides any key "
+               "(`bodies.N.key=value`: "
+               "body N, from 1; `bodies.key=value`: every body).\n";
     }
     std::string section;
     for (const KeySpec& spec : case_schema()) {

@@ -78,6 +78,22 @@ TEST(CaseReader, OverridesSetAndAddKeys)
     EXPECT_DOUBLE_EQ(*c.steady_tolerance, 1e-6);
 }
 
+TEST(CaseReader, OverridesReachOneOrEveryEntryOfATableArray)
+{
+    const std::string bodies = valid_case +
+                               "[[bodies]]\ndiameter = 0.5\ndensity = 2.0\nposition = [0.5, 0.5]\n"
+                               "[[bodies]]\ndiameter = 0.5\ndensity = 2.0\nposition = [0.5, 1.5]\n";
+    const CaseConfig one = read_case_string(bodies, "valid.toml", {"bodies.2.n_rings=13"});
+    ASSERT_EQ(one.bodies.size(), 2U);
+    EXPECT_EQ(one.bodies[0].n_rings, 0);
+    EXPECT_EQ(one.bodies[1].n_rings, 13);
+    const CaseConfig every =
+        read_case_string(bodies, "valid.toml", {"bodies.density=3.5", "output.lines.1.points=7"});
+    EXPECT_DOUBLE_EQ(every.bodies[0].density, 3.5);
+    EXPECT_DOUBLE_EQ(every.bodies[1].density, 3.5);
+    EXPECT_EQ(every.lines[0].n_points, 7);
+}
+
 TEST(CaseReader, ThreeDimensionalCaseNeedsThreeEntriesEverywhere)
 {
     const std::string text = R"([domain]
@@ -474,6 +490,48 @@ std::vector<BadCase> bad_cases()
          "time.end_time",
          "did you mean 'time.end'"},
         {"set_out_of_range", v, {"time.dt=0"}, "--set", 0, "time.dt", "out of range"},
+        {"set_body_past_the_last",
+         v + body,
+         {"bodies.2.density=3"},
+         "--set",
+         0,
+         "bodies.2.density",
+         "the case has 1 [[bodies]] entry (counted from 1), there is no 2"},
+        {"set_body_zero",
+         v + body,
+         {"bodies.0.density=3"},
+         "--set",
+         0,
+         "bodies.0.density",
+         "there is no 0"},
+        {"set_body_without_bodies",
+         v,
+         {"bodies.density=3"},
+         "--set",
+         0,
+         "bodies.density",
+         "the case has no [[bodies]] entry to set it in"},
+        {"set_body_out_of_range",
+         v + body,
+         {"bodies.1.n_rings=-1"},
+         "--set",
+         0,
+         "bodies.n_rings",
+         "out of range"},
+        {"set_body_misspelt",
+         v + body,
+         {"bodies.1.n_ring=3"},
+         "--set",
+         0,
+         "bodies.n_ring",
+         "did you mean 'bodies.n_rings'"},
+        {"set_three_parts",
+         v,
+         {"time.dt.x=1"},
+         "--set",
+         0,
+         "time.dt.x",
+         "expected section.key=value"},
         {"set_wrong_type",
          v,
          {"domain.cells=[1.5,2]"},
