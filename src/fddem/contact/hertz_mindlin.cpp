@@ -9,7 +9,9 @@ namespace fddem {
 double HertzMindlin::damping_constant(double restitution)
 {
     const double log_e = std::log(restitution);
-    const double zeta = -log_e / std::sqrt(std::numbers::pi * std::numbers::pi + log_e * log_e);
+    // −ln e ≥ 0, written |ln e| so that e = 1 gives +0 (not −0 in the printed damping)
+    const double zeta =
+        std::abs(log_e) / std::sqrt(std::numbers::pi * std::numbers::pi + log_e * log_e);
     return std::sqrt(5.0) * zeta;
 }
 

@@ -50,7 +50,9 @@ LinearSpringDashpot::Params LinearSpringDashpot::from_restitution(double restitu
         throw InputError("", 0, "contact.contact_time", "must be > 0");
     }
     const double log_e = std::log(restitution);
-    const double zeta = -log_e / std::sqrt(std::numbers::pi * std::numbers::pi + log_e * log_e);
+    // −ln e ≥ 0, written |ln e| so that e = 1 gives +0 (not −0 in the printed damping)
+    const double zeta =
+        std::abs(log_e) / std::sqrt(std::numbers::pi * std::numbers::pi + log_e * log_e);
     const double omega_d = std::numbers::pi / contact_time;
     const double omega_0 = omega_d / std::sqrt(1.0 - zeta * zeta);
     const double stiffness = mass * omega_0 * omega_0;
