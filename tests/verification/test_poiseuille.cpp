@@ -151,5 +151,53 @@ TEST(Poiseuille, InflowToOutflowChannelIsExactWithTheExactPressureGradient)
     EXPECT_NEAR(outflow, inflow, 1e-14 * inflow);
 }
 
+TEST(Poiseuille, ThreeDimensionalInflowToOutflowChannelIsExact)
+{
+    // The same through the 3D instantiation: outflow on x_low and inflow on x_high (flow along
+    // −x), walls in y, periodic in z; the parabola is over y only (z is periodic).
+    const double mu = 0.1;
+    const double u_max = 1.5;
+    CaseConfig config = test::cavity_config(8, 1.0, 0.05, 400.0);
+    config.dimension = 3;
+    config.origin = {0.0, 0.0, 0.0};
+    config.size = {2.0, 1.0, 0.5};
+    config.cells = {12, 8, 4};
+    config.periodic = {false, false, true};
+    config.wall_velocity.clear();
+    config.boundary_kind = {{"outflow", "inflow"}, {"wall", "wall"}, {"wall", "wall"}};
+    config.inflow_profile = "parabolic";
+    config.inflow_velocity = u_max;
+    config.viscosity = mu;
+    config.body_force = {0.0, 0.0, 0.0};
+    config.gravity = {0.0, 0.0, 0.0};
+    config.steady_tolerance = 1e-11;
+    config.tolerance = 1e-12;
+    config.max_outer_iterations = 200;
+    Simulation<3> sim(config);
+    test::run_to_end(sim);
+    const auto& grid = sim.grid();
+    double max_error = 0.0;
+    double max_gradient_error = 0.0;
+    for (int k = 0; k < grid.cells(2); ++k) {
+        for (int j = 0; j < grid.cells(1); ++j) {
+            for (int i = 0; i <= grid.cells(0); ++i) {
+                const double y = grid.face_centre(0, {i, j, k})[1];
+                const double exact = -4.0 * u_max * y * (1.0 - y);
+                max_error = std::max(max_error, std::abs(sim.fluid().u[0]({i, j, k}) - exact));
+            }
+            for (int i = 1; i < grid.cells(0); ++i) {
+                const double gradient =
+                    (sim.fluid().p({i, j, k}) - sim.fluid().p({i - 1, j, k})) / grid.spacing(0);
+                max_gradient_error =
+                    std::max(max_gradient_error, std::abs(gradient - 8.0 * mu * u_max));
+            }
+        }
+    }
+    const auto [inflow, outflow] = boundary_fluxes(grid, sim.boundary_conditions(), sim.fluid().u);
+    EXPECT_LT(max_error, 1e-9);
+    EXPECT_LT(max_gradient_error, 1e-8 * 8.0 * mu * u_max);
+    EXPECT_NEAR(outflow, inflow, 1e-14 * inflow);
+}
+
 } // namespace
 } // namespace fddem
