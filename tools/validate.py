@@ -22,6 +22,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
+import cylinder_wake  # noqa: E402
 import fddem_io  # noqa: E402
 
 SHARED_UHLMANN = os.path.join(ROOT, "..", "shared", "reference", "digitized", "uhlmann_2005")
@@ -124,6 +125,61 @@ def towed_check(name, refinement, tolerance, quick):
                  evaluate, plot)
 
 
+def schafer_turek_check(name, cells, quick):
+    """Schäfer & Turek (1996) 2D-1, Re = 20; tolerances as tests/validation/test_cylinder_in_channel.cpp."""
+    source = ("Schäfer & Turek (1996) Table 4 (reference/SOURCE.md); tolerance: the diffuse interface, "
+              "first order in h (measured at D/40: C_D −2.5 %, L_a −4.4 %, Δp −1.7 %)")
+
+    def evaluate(run_dir):
+        w = cylinder_wake.wake_numbers(run_dir, 0.2, 0.1, 0.25)
+        return [("C_D", w["C_D"], 5.58, 0.035 * 5.58, source),
+                ("C_L", w["C_L"], 0.0107, 0.001, source),
+                ("L_a [m]", w["L_a"] if w["L_a"] is not None else float("nan"), 0.0847, 0.06 * 0.0847,
+                 source),
+                ("Δp [Pa]", w["dp"], 0.1174, 0.03 * 0.1174, source)]
+
+    def plot(run_dir, axes):
+        axis = fddem_io.read_csv_columns(os.path.join(run_dir, "samples", "wake_axis.csv"))
+        axes.plot(axis["x"] - 0.25, axis["u"], label="fddem u on y = 0.2")
+        axes.axvspan(0.0842, 0.0852, color="k", alpha=0.3, label="L_a, Schäfer & Turek (1996)")
+        axes.axhline(0.0, color="k", lw=0.5)
+        axes.set_xlabel("x − x_rear [m]")
+        axes.set_ylabel("u [m/s]")
+
+    return Check(name, "cases/verification/cylinder_re20/case.toml", [f"domain.cells={cells}"], quick,
+                 evaluate, plot)
+
+
+# Re = 40 bounds (as the validation test): C_D above the unbounded references (1.498) and below
+# Dennis & Chang's 1.522 raised by the tunnel's measured blockage effect (+5.7 %) and 5 % more;
+# L/D from 10 % below Coutanceau & Bouard's 2.13 to 5 % above Dennis & Chang's 2.345.
+RE40_DRAG, RE40_DRAG_TOLERANCE = 0.5 * (1.498 + 1.690), 0.5 * (1.690 - 1.498)
+RE40_LENGTH, RE40_LENGTH_TOLERANCE = 0.5 * (1.917 + 2.462), 0.5 * (2.462 - 1.917)
+
+
+def re40_check(name, cells, quick):
+    """Fixed cylinder at Re = 40 in a 24 D × 16 D tunnel; tolerances as the validation test."""
+    source = ("unbounded: Dennis & Chang (1970) 1.522 / 2.345, Fornberg (1980) 1.498 / 2.24 "
+              "(reference/SOURCE.md); tolerance: the tunnel's blockage and the diffuse interface")
+
+    def evaluate(run_dir):
+        w = cylinder_wake.wake_numbers(run_dir, 1.0, 1.0, 8.5)
+        return [("C_D", w["C_D"], RE40_DRAG, RE40_DRAG_TOLERANCE, source),
+                ("L/D", w["L_a/D"] if w["L_a/D"] is not None else float("nan"), RE40_LENGTH,
+                 RE40_LENGTH_TOLERANCE, source)]
+
+    def plot(run_dir, axes):
+        axis = fddem_io.read_csv_columns(os.path.join(run_dir, "samples", "wake_axis.csv"))
+        axes.plot(axis["x"] - 8.5, axis["u"], label="fddem u on the axis")
+        axes.axvspan(2.24, 2.345, color="k", alpha=0.3, label="L/D, Fornberg – Dennis & Chang")
+        axes.axhline(0.0, color="k", lw=0.5)
+        axes.set_xlabel("(x − x_rear)/D")
+        axes.set_ylabel("u/U∞")
+
+    return Check(name, "cases/verification/cylinder_re40/case.toml", [f"domain.cells={cells}"], quick,
+                 evaluate, plot)
+
+
 def landing_check(name, overrides, quick):
     def evaluate(run_dir):
         summary = fddem_io.read_summary(run_dir)
@@ -210,6 +266,8 @@ def all_checks():
                        "cases/paper/fig04_settling_channel_fine/case.toml", [], 0.035, False),
         # (the towed cylinder at D/32 needs N_a = 12, which --set cannot reach: it is the
         # validation test TowedCylinder.DragApproachesFaxenWithRefinement)
+        schafer_turek_check("cylinder in a channel, Re 20, Schäfer & Turek 2D-1 (h = D/40)", "[880,164]", False),
+        re40_check("fixed cylinder, Re 40, tunnel 24 D × 16 D (h = D/32)", "[768,512]", False),
         pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.03, False),
         pile_check("100 disks settle", "cases/benchmarks/sedimentation_100_disks/case.toml", 0.05, False),
     ]

@@ -3,6 +3,8 @@
 
 #include "fddem/grid/loops.hpp"
 
+#include <array>
+
 namespace fddem {
 namespace {
 
@@ -31,56 +33,193 @@ void wrap_periodic(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a)
     for_each_index(slab(grid, axis, n, storage.hi[ax]), copy);
 }
 
+/// The boundary faces of `axis` on `side`: the face slab at index 0 or n, transverse extent
+/// the cells.
+template <int Dim>
+Box<Dim> boundary_faces(const MacGrid<Dim>& grid, int axis, int side)
+{
+    Box<Dim> box = grid.cell_box();
+    const auto ax = static_cast<std::size_t>(axis);
+    box.lo[ax] = side == 0 ? 0 : grid.cells(axis);
+    box.hi[ax] = box.lo[ax] + 1;
+    return box;
+}
+
+/// Normal component `axis` on `side` of that axis: the boundary face (except at an outflow,
+/// which set_outflow_velocity sets) and the ghost faces beyond it.
+template <int Dim>
+void fill_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
+                      int side, GridArray<Dim>& ua)
+{
+    const Box<Dim> storage = grid.storage_box();
+    const auto ax = static_cast<std::size_t>(axis);
+    const int n = grid.cells(axis);
+    const BoundaryKind kind = bc.side_kind(axis, side);
+    const int face = side == 0 ? 0 : n;
+    const Box<Dim> face_slab = side == 0 ? slab(grid, axis, 0, 1) : slab(grid, axis, n, n + 1);
+    if (kind == BoundaryKind::wall) {
+        const double wall = bc.wall(axis, side)[axis];
+        for_each_index(face_slab, [&](const Index<Dim>& i) { ua(i) = wall; });
+    } else if (kind == BoundaryKind::inflow) {
+        for_each_index(face_slab, [&](const Index<Dim>& i) {
+            ua(i) = inflow_velocity(grid, bc, axis, side, grid.face_centre(axis, i));
+        });
+    }
+    const Box<Dim> ghosts =
+        side == 0 ? slab(grid, axis, storage.lo[ax], 0) : slab(grid, axis, n + 1, storage.hi[ax]);
+    for_each_index(ghosts, [&](const Index<Dim>& i) {
+        const double boundary = ua(with_axis(i, axis, face));
+        // Outflow: zero gradient; wall and inflow: odd images about the boundary value.
+        ua(i) = kind == BoundaryKind::outflow
+                    ? boundary
+                    : 2.0 * boundary - ua(with_axis(i, axis, 2 * face - i[ax]));
+    });
+}
+
+/// Tangential component on `side` of `axis`: the ghosts across that side.
+template <int Dim>
+void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
+                          int side, int component, GridArray<Dim>& ua)
+{
+    const Box<Dim> storage = grid.storage_box();
+    const auto ax = static_cast<std::size_t>(axis);
+    const int n = grid.cells(axis);
+    // The last interior value and the one before it, and the first ghost's index.
+    const int first = side == 0 ? 0 : n - 1;
+    const int second = side == 0 ? 1 : n - 2;
+    const int ghost = side == 0 ? -1 : n;
+    const Box<Dim> outer =
+        side == 0 ? slab(grid, axis, storage.lo[ax], -1) : slab(grid, axis, n + 1, storage.hi[ax]);
+    if (bc.side_kind(axis, side) == BoundaryKind::outflow) {
+        const Box<Dim> all =
+            side == 0 ? slab(grid, axis, storage.lo[ax], 0) : slab(grid, axis, n, storage.hi[ax]);
+        for_each_index(all, [&](const Index<Dim>& i) { ua(i) = ua(with_axis(i, axis, first)); });
+        return;
+    }
+    // Wall or inflow (whose tangential velocity is zero): the first ghost continues the
+    // quadratic through the wall value and two interior values; further ghosts are odd images.
+    const double wall = bc.wall(axis, side)[component];
+    for_each_index(slab(grid, axis, ghost, ghost + 1), [&](const Index<Dim>& i) {
+        ua(i) =
+            (8.0 * wall - 6.0 * ua(with_axis(i, axis, first)) + ua(with_axis(i, axis, second))) /
+            3.0;
+    });
+    for_each_index(outer, [&](const Index<Dim>& i) {
+        // Mirror about the wall at index -1/2 (low) or n - 1/2 (high).
+        const int mirror = side == 0 ? -1 - i[ax] : 2 * n - 1 - i[ax];
+        ua(i) = 2.0 * wall - ua(with_axis(i, axis, mirror));
+    });
+}
+
 } // namespace
+
+template <int Dim>
+double inflow_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
+                       int side, const Vec<Dim>& x) noexcept
+{
+    double speed = bc.inflow.speed;
+    if (bc.inflow.is_parabolic) {
+        for (int t = 0; t < Dim; ++t) {
+            if (t == axis || bc.periodic(t)) {
+                continue;
+            }
+            const double s = (x[t] - grid.origin()[t]) / grid.length()[t];
+            speed *= 4.0 * s * (1.0 - s);
+        }
+    }
+    return side == 0 ? speed : -speed;
+}
 
 template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                           FaceField<Dim>& u)
 {
-    const Box<Dim> storage = grid.storage_box();
     for (int d = 0; d < Dim; ++d) {
-        const auto ax = static_cast<std::size_t>(d);
-        const int n = grid.cells(d);
         for (int a = 0; a < Dim; ++a) {
             GridArray<Dim>& ua = u[a];
             if (bc.periodic(d)) {
                 wrap_periodic(grid, d, ua);
                 continue;
             }
-            const double low = bc.wall(d, 0)[a];
-            const double high = bc.wall(d, 1)[a];
-            if (a == d) {
-                // Normal component: the wall face carries the wall's normal velocity; ghost
-                // faces are odd images about the wall.
-                for_each_index(slab(grid, d, 0, 1), [&](const Index<Dim>& i) { ua(i) = low; });
-                for_each_index(slab(grid, d, n, n + 1), [&](const Index<Dim>& i) { ua(i) = high; });
-                for_each_index(slab(grid, d, storage.lo[ax], 0), [&](const Index<Dim>& i) {
-                    ua(i) = 2.0 * low - ua(with_axis(i, d, -i[ax]));
-                });
-                for_each_index(slab(grid, d, n + 1, storage.hi[ax]), [&](const Index<Dim>& i) {
-                    ua(i) = 2.0 * high - ua(with_axis(i, d, 2 * n - i[ax]));
-                });
-            } else {
-                // Tangential component: the first ghost continues the quadratic through the
-                // wall value and two interior values; further ghosts are odd images.
-                for_each_index(slab(grid, d, -1, 0), [&](const Index<Dim>& i) {
-                    ua(i) =
-                        (8.0 * low - 6.0 * ua(with_axis(i, d, 0)) + ua(with_axis(i, d, 1))) / 3.0;
-                });
-                for_each_index(slab(grid, d, n, n + 1), [&](const Index<Dim>& i) {
-                    ua(i) = (8.0 * high - 6.0 * ua(with_axis(i, d, n - 1)) +
-                             ua(with_axis(i, d, n - 2))) /
-                            3.0;
-                });
-                for_each_index(slab(grid, d, storage.lo[ax], -1), [&](const Index<Dim>& i) {
-                    ua(i) = 2.0 * low - ua(with_axis(i, d, -1 - i[ax]));
-                });
-                for_each_index(slab(grid, d, n + 1, storage.hi[ax]), [&](const Index<Dim>& i) {
-                    ua(i) = 2.0 * high - ua(with_axis(i, d, 2 * n - 1 - i[ax]));
-                });
+            for (int side = 0; side < 2; ++side) {
+                if (a == d) {
+                    fill_normal_side(grid, bc, d, side, ua);
+                } else {
+                    fill_tangential_side(grid, bc, d, side, a, ua);
+                }
             }
         }
     }
+}
+
+template <int Dim>
+std::array<double, 2> boundary_fluxes(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                                      const FaceField<Dim>& u)
+{
+    std::array<double, 2> flux{}; // {in through inflows, out through outflows}
+    for (int d = 0; d < Dim; ++d) {
+        if (bc.periodic(d)) {
+            continue;
+        }
+        const double area = grid.cell_volume() / grid.spacing(d);
+        for (int side = 0; side < 2; ++side) {
+            const BoundaryKind kind = bc.side_kind(d, side);
+            if (kind == BoundaryKind::wall) {
+                continue;
+            }
+            const double outward = side == 0 ? -1.0 : 1.0;
+            const double out = outward * area *
+                               sum_over(boundary_faces(grid, d, side),
+                                        [&](const Index<Dim>& i) { return u[d](i); });
+            if (kind == BoundaryKind::inflow) {
+                flux[0] -= out;
+            } else {
+                flux[1] += out;
+            }
+        }
+    }
+    return flux;
+}
+
+template <int Dim>
+double set_outflow_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                            FaceField<Dim>& u)
+{
+    if (!bc.has_outflow()) {
+        return 0.0;
+    }
+    // Zero gradient: each outflow face takes the normal velocity of the face one cell inside.
+    double outflow_area = 0.0;
+    for (int d = 0; d < Dim; ++d) {
+        for (int side = 0; side < 2; ++side) {
+            if (bc.periodic(d) || bc.side_kind(d, side) != BoundaryKind::outflow) {
+                continue;
+            }
+            const int inside = side == 0 ? 1 : grid.cells(d) - 1;
+            const Box<Dim> faces = boundary_faces(grid, d, side);
+            for_each_index(faces,
+                           [&](const Index<Dim>& i) { u[d](i) = u[d](with_axis(i, d, inside)); });
+            outflow_area +=
+                static_cast<double>(faces.size()) * grid.cell_volume() / grid.spacing(d);
+        }
+    }
+    // Global mass conservation: one uniform outward correction over all outflow faces. A
+    // uniform addition (rather than scaling) also works from a fluid at rest.
+    const auto [inflow, outflow] = boundary_fluxes(grid, bc, u);
+    const double correction = (inflow - outflow) / outflow_area;
+    for (int d = 0; d < Dim; ++d) {
+        for (int side = 0; side < 2; ++side) {
+            if (bc.periodic(d) || bc.side_kind(d, side) != BoundaryKind::outflow) {
+                continue;
+            }
+            const double outward = side == 0 ? -1.0 : 1.0;
+            GridArray<Dim>& ud = u[d];
+            for_each_index(boundary_faces(grid, d, side),
+                           [&](const Index<Dim>& i) { ud(i) += outward * correction; });
+            fill_normal_side(grid, bc, d, side, ud);
+        }
+    }
+    return correction;
 }
 
 template <int Dim>
@@ -122,6 +261,18 @@ template void fill_velocity_ghosts<2>(const MacGrid<2>&, const BoundaryCondition
                                       FaceField<2>&);
 template void fill_velocity_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
                                       FaceField<3>&);
+template double inflow_velocity<2>(const MacGrid<2>&, const BoundaryConditions<2>&, int, int,
+                                   const Vec<2>&) noexcept;
+template double inflow_velocity<3>(const MacGrid<3>&, const BoundaryConditions<3>&, int, int,
+                                   const Vec<3>&) noexcept;
+template double set_outflow_velocity<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
+                                        FaceField<2>&);
+template double set_outflow_velocity<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
+                                        FaceField<3>&);
+template std::array<double, 2> boundary_fluxes<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
+                                                  const FaceField<2>&);
+template std::array<double, 2> boundary_fluxes<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
+                                                  const FaceField<3>&);
 template void fill_cell_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&, CellField<2>&);
 template void fill_cell_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&, CellField<3>&);
 

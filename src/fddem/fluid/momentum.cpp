@@ -8,9 +8,12 @@
 //   a_nb = D + max(∓F, 0),  a_P = Σ a_nb + ρf ΔV/Δt + ΔF,  D = μ A/h,
 // with the convection upwinded implicitly and corrected to central differences in b from the
 // latest iterate (deferred correction), so that the converged answer is second order.
-// Walls: the normal velocity on a wall face is known; a tangential neighbour across a wall is
-// the ghost value u_g = (8 u_w − 6 u_P + u_E)/3 (quadratic through the wall value), folded into
-// the coefficients: a_P += 2 a_W, a_E += a_W/3, b += 8/3 a_W u_w, a_W = 0.
+// Walls and inflows: the normal velocity on a boundary face is known (it enters as a fixed
+// neighbour, and the mass fluxes through boundary faces come from it); a tangential neighbour
+// across a wall or an inflow is the ghost value u_g = (8 u_w − 6 u_P + u_E)/3 (quadratic
+// through the wall value), folded into the coefficients: a_P += 2 a_W, a_E += a_W/3,
+// b += 8/3 a_W u_w, a_W = 0. Outflows: a neighbour across the outflow, or the outflow face
+// itself for the normal component, equals u_P (zero gradient): a_P −= a_E, a_E = 0.
 
 #include "fddem/fluid/momentum.hpp"
 
@@ -49,20 +52,19 @@ double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
         const double* u;    ///< the velocity component along this axis
         double wall_low;    ///< this component's wall velocity on the low side [m/s]
         double wall_high;
-        bool is_walled; ///< tangential to walls on this axis (not periodic, not `axis`)
+        bool is_bounded;        ///< not periodic
+        BoundaryKind kind_low;  ///< the low side's kind (if bounded)
+        BoundaryKind kind_high; ///< the high side's kind (if bounded)
         int n;
     };
     std::array<AxisTerms, Dim> terms{};
     for (int d = 0; d < Dim; ++d) {
         const double area = volume / grid.spacing(d);
-        terms[static_cast<std::size_t>(d)] = {grid.stride(d),
-                                              0.5 * rho * area,
-                                              fluid.viscosity * area / grid.spacing(d),
-                                              state.u[d].data(),
-                                              bc.wall(d, 0)[axis],
-                                              bc.wall(d, 1)[axis],
-                                              d != axis && !bc.periodic(d),
-                                              grid.cells(d)};
+        terms[static_cast<std::size_t>(d)] = {
+            grid.stride(d),    0.5 * rho * area,    fluid.viscosity * area / grid.spacing(d),
+            state.u[d].data(), bc.wall(d, 0)[axis], bc.wall(d, 1)[axis],
+            !bc.periodic(d),   bc.side_kind(d, 0),  bc.side_kind(d, 1),
+            grid.cells(d)};
     }
     double* a_p_out = system.a_p.data();
     double* b_out = system.b.data();
@@ -86,19 +88,28 @@ double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
                 const AxisTerms& t = terms[static_cast<std::size_t>(d)];
                 const std::ptrdiff_t s = t.stride;
                 const int cd = c[static_cast<std::size_t>(d)];
-                const bool is_wall_low = t.is_walled && cd == 0;
-                const bool is_wall_high = t.is_walled && cd == t.n - 1;
+                // The neighbour across the low (high) side is outside the box: a wall ghost
+                // (tangential components next to a wall or an inflow), or equal to u_P
+                // (next to an outflow; for the normal component, the outflow face itself).
+                const bool is_first = t.is_bounded && cd == (d == axis ? 1 : 0);
+                const bool is_last = t.is_bounded && cd == t.n - 1;
+                const bool is_wall_low =
+                    d != axis && is_first && t.kind_low != BoundaryKind::outflow;
+                const bool is_wall_high =
+                    d != axis && is_last && t.kind_high != BoundaryKind::outflow;
+                const bool is_open_low = is_first && t.kind_low == BoundaryKind::outflow;
+                const bool is_open_high = is_last && t.kind_high == BoundaryKind::outflow;
                 // Mass fluxes through the low and high faces of the velocity control volume:
-                // along `axis` they sit at cell centres, across it at cell edges.
+                // along `axis` they sit at cell centres, across it at cell edges (on the
+                // boundary, from the boundary faces' normal velocity: zero at a wall).
                 double flux_low = 0.0;
                 double flux_high = 0.0;
                 if (d == axis) {
                     flux_low = t.flux_factor * (ua[o - s] + ua[o]);
                     flux_high = t.flux_factor * (ua[o] + ua[o + s]);
                 } else {
-                    flux_low = is_wall_low ? 0.0 : t.flux_factor * (t.u[o] + t.u[o - s_axis]);
-                    flux_high =
-                        is_wall_high ? 0.0 : t.flux_factor * (t.u[o + s] + t.u[o + s - s_axis]);
+                    flux_low = t.flux_factor * (t.u[o] + t.u[o - s_axis]);
+                    flux_high = t.flux_factor * (t.u[o + s] + t.u[o + s - s_axis]);
                 }
                 double a_low = t.diffusion + std::max(flux_low, 0.0);
                 double a_high = t.diffusion + std::max(-flux_high, 0.0);
@@ -124,6 +135,14 @@ double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
                     a_p += 2.0 * a_high;
                     a_low += a_high / 3.0;
                     b += 8.0 / 3.0 * a_high * t.wall_high;
+                    a_high = 0.0;
+                }
+                if (is_open_low) {
+                    a_p -= a_low;
+                    a_low = 0.0;
+                }
+                if (is_open_high) {
+                    a_p -= a_high;
                     a_high = 0.0;
                 }
                 a_nb_out[static_cast<std::size_t>(2 * d)][o] = a_low;

@@ -28,6 +28,10 @@ double correct_pressure_and_velocity(const MacGrid<Dim>& grid, const BoundaryCon
                                      double pressure_relaxation, PoissonSolver<Dim>& poisson,
                                      FluidState<Dim>& state)
 {
+    // Outflow faces from u* (zero gradient, corrected to the inflow's volume flux): they are
+    // not corrected by p′ below, and they make the right-hand side sum to zero, as the
+    // zero-normal-gradient Poisson problem requires.
+    set_outflow_velocity(grid, bc, state.u);
     // eq. (9): the right-hand side b′ is the mass imbalance of u*.
     const double max_divergence = compute_divergence(grid, state.u, state.divergence);
     const double source_factor = fluid.density / dt;

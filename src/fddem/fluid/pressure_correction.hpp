@@ -13,8 +13,9 @@ template <int Dim>
 double compute_divergence(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
                           CellField<Dim>& divergence);
 
-/// eqs. (9)–(12): solves ∇²p′ = (ρf/Δt) ∇·u* and corrects u = u* − (Δt/ρf) ∇p′ on every
-/// unknown face, p = p* + α_p p′. Returns max |∇·u*| before the correction [1/s].
+/// eqs. (9)–(12): sets the outflow faces from u* (set_outflow_velocity), solves
+/// ∇²p′ = (ρf/Δt) ∇·u* and corrects u = u* − (Δt/ρf) ∇p′ on every unknown face,
+/// p = p* + α_p p′. Returns max |∇·u*| before the correction [1/s].
 ///
 /// Paper deviation: eqs. (11)–(12) use SIMPLE's d_ij = ΔV/a_ij; here d = Δt/ρf for every face,
 /// the consistent (SIMPLEC) coefficient of the transient term. The converged answer of the

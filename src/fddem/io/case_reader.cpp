@@ -454,9 +454,12 @@ private:
             if (is_table_array(spec.section)) {
                 continue;
             }
-            if (spec.section == "walls" && spec.name[0] == 'z' && dimension_ == 2) {
-                if (const toml::node* n = node("walls", spec.name)) {
-                    where_.fail(spec.full_name(), n, "a 2D case has no z walls");
+            if ((spec.section == "walls" || spec.section == "boundaries") && spec.name[0] == 'z' &&
+                dimension_ == 2) {
+                if (const toml::node* n = node(spec.section, spec.name)) {
+                    where_.fail(spec.full_name(), n,
+                                spec.section == "walls" ? "a 2D case has no z walls"
+                                                        : "a 2D case has no z sides");
                 }
                 continue;
             }
@@ -531,6 +534,14 @@ private:
         for (int d = 0; d < dimension_; ++d) {
             c.wall_velocity.push_back(
                 {as_reals(*node("walls", walls[d][0])), as_reals(*node("walls", walls[d][1]))});
+        }
+        for (int d = 0; d < dimension_; ++d) {
+            c.boundary_kind.push_back(
+                {text("boundaries", walls[d][0]), text("boundaries", walls[d][1])});
+        }
+        c.inflow_profile = text("inflow", "profile");
+        if (node("inflow", "velocity") != nullptr) {
+            c.inflow_velocity = real("inflow", "velocity");
         }
         c.density = real("fluid", "density");
         c.viscosity = node("fluid", "viscosity") != nullptr ? real("fluid", "viscosity") : 0.0;
@@ -999,6 +1010,45 @@ private:
         }
     }
 
+    /// An inflow needs a speed and an outflow (else the Poisson problem of the pressure
+    /// correction has no solution: the fluid let in could not leave); inflow keys without an
+    /// inflow would be ignored.
+    void check_inflow_and_outflow(const CaseConfig& c) const
+    {
+        bool has_inflow = false;
+        bool has_outflow = false;
+        const toml::node* first_inflow = nullptr;
+        const char* sides[3][2] = {{"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}};
+        for (int d = 0; d < dimension_; ++d) {
+            if (c.periodic[static_cast<std::size_t>(d)]) {
+                continue;
+            }
+            for (int side = 0; side < 2; ++side) {
+                const std::string& kind =
+                    c.boundary_kind[static_cast<std::size_t>(d)][static_cast<std::size_t>(side)];
+                if (kind == "inflow" && !has_inflow) {
+                    has_inflow = true;
+                    first_inflow = node("boundaries", sides[d][side]);
+                }
+                has_outflow = has_outflow || kind == "outflow";
+            }
+        }
+        const toml::node* velocity = node("inflow", "velocity");
+        if (has_inflow && velocity == nullptr) {
+            where_.fail("inflow.velocity", first_inflow,
+                        "a side is an inflow: give its speed, inflow.velocity");
+        }
+        if (!has_inflow && velocity != nullptr) {
+            where_.fail("inflow.velocity", velocity,
+                        "no side is an inflow (boundaries.*): inflow.velocity would be ignored");
+        }
+        if (has_inflow && !has_outflow) {
+            where_.fail("boundaries", first_inflow,
+                        "an inflow needs an outflow side (boundaries.* = \"outflow\"): the "
+                        "fluid let in must leave");
+        }
+    }
+
     void check_contradictions(const CaseConfig& c) const
     {
         if (!c.end_time && !c.steady_tolerance) {
@@ -1022,6 +1072,23 @@ private:
                                 "axis " + std::to_string(d) +
                                     " is periodic (domain.periodic): it has no walls");
                 }
+                const std::string boundary_key = std::string("boundaries.") + walls[d][side];
+                const toml::node* kind_node = node("boundaries", walls[d][side]);
+                const std::string& kind =
+                    c.boundary_kind[static_cast<std::size_t>(d)][static_cast<std::size_t>(side)];
+                if (c.periodic[static_cast<std::size_t>(d)] &&
+                    defaulted_.count(boundary_key) == 0 && kind_node != nullptr) {
+                    where_.fail(boundary_key, kind_node,
+                                "axis " + std::to_string(d) +
+                                    " is periodic (domain.periodic): it has no sides");
+                }
+                if (kind != "wall" && is_given) {
+                    where_.fail(key, n,
+                                "the " + std::string(walls[d][side]) + " side is an " + kind +
+                                    " (" + boundary_key +
+                                    "), not a wall: it takes no wall "
+                                    "velocity");
+                }
                 const double normal =
                     c.wall_velocity[static_cast<std::size_t>(d)][static_cast<std::size_t>(side)]
                                    [static_cast<std::size_t>(d)];
@@ -1033,6 +1100,7 @@ private:
                 }
             }
         }
+        check_inflow_and_outflow(c);
         std::set<std::string> names;
         const toml::array* lines = find_table_array(doc_, "output.lines");
         for (std::size_t k = 0; k < c.lines.size(); ++k) {

@@ -98,6 +98,24 @@ std::vector<KeySpec> case_schema()
     }
     add_material_keys(s, "walls", "walls (all share one set)");
 
+    for (const char* side : {"x_low", "x_high", "y_low", "y_high", "z_low", "z_high"}) {
+        s.push_back(choice(key("boundaries", side, T::string, none, "\"wall\"",
+                               fmt::format("What the {} side of a non-periodic axis is: a wall "
+                                           "(no slip; [walls] sets its velocity), an inflow "
+                                           "([inflow] sets its velocity) or an outflow (zero "
+                                           "normal gradient, carrying the inflow's volume flux).",
+                                           side)),
+                           {"wall", "inflow", "outflow"}));
+    }
+    s.push_back(choice(key("inflow", "profile", T::string, none, "\"uniform\"",
+                           "Normal velocity over every inflow side: uniform, or parabolic (Π 4s(1 "
+                           "− s) over the walled transverse axes, s the fraction across the box: "
+                           "a channel's Poiseuille profile, mean 2/3 of the maximum in 2D)."),
+                       {"uniform", "parabolic"}));
+    s.push_back(positive(key("inflow", "velocity", T::real, "m/s", "none",
+                             "Inflow speed into the box: the uniform speed, or the parabola's "
+                             "maximum (centre line). Required when a side is an inflow.")));
+
     s.push_back(
         positive(key("fluid", "density", T::real, "kg/m³", std::nullopt, "Fluid density ρf.")));
     s.push_back(

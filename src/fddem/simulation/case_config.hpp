@@ -48,6 +48,12 @@ struct CaseConfig {
     // [walls]: velocity of each wall [m/s], indexed [axis][side]; zero when not given.
     std::vector<std::array<std::vector<double>, 2>> wall_velocity;
 
+    // [boundaries]: "wall", "inflow" or "outflow", indexed [axis][side]; "wall" when not given.
+    std::vector<std::array<std::string, 2>> boundary_kind;
+    // [inflow]
+    std::string inflow_profile = "uniform"; ///< "uniform" or "parabolic"
+    double inflow_velocity = 0.0;           ///< [m/s]: the speed, or the parabola's maximum
+
     // [fluid]
     double density = 1.0;           ///< ρf [kg/m³]
     double viscosity = 1.0;         ///< μ [Pa·s]

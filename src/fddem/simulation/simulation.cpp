@@ -49,6 +49,12 @@ BoundaryConditions<Dim> make_boundary_conditions(const CaseConfig& config)
     for (int d = 0; d < Dim; ++d) {
         const auto k = static_cast<std::size_t>(d);
         bc.is_periodic[k] = k < config.periodic.size() && config.periodic[k];
+        for (std::size_t side = 0; side < 2 && k < config.boundary_kind.size(); ++side) {
+            const std::string& kind = config.boundary_kind[k][side];
+            bc.kind[k][side] = kind == "inflow"    ? BoundaryKind::inflow
+                               : kind == "outflow" ? BoundaryKind::outflow
+                                                   : BoundaryKind::wall;
+        }
         if (k >= config.wall_velocity.size()) {
             continue;
         }
@@ -59,6 +65,7 @@ BoundaryConditions<Dim> make_boundary_conditions(const CaseConfig& config)
             }
         }
     }
+    bc.inflow = {config.inflow_profile == "parabolic", config.inflow_velocity};
     return bc;
 }
 
