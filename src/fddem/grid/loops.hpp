@@ -14,7 +14,9 @@
 
 namespace fddem {
 
-/// Below this many points a loop runs on one thread: the fork/join would cost more.
+/// Below this many points a loop runs on one thread: the fork/join would cost more. (The
+/// `is_threaded` flags below are read only by OpenMP pragmas, hence [[maybe_unused]] for builds
+/// without OpenMP.)
 inline constexpr std::size_t min_points_for_threads = 8192;
 
 /// Calls f(index) for every index in `box`, in parallel over the outermost axis.
@@ -24,7 +26,8 @@ template <int Dim, class F>
 void for_each_index(const Box<Dim>& box, F&& f, std::size_t points_per_index = 1)
 {
     static_assert(Dim == 2 || Dim == 3, "fddem grids are 2D or 3D");
-    const bool is_threaded = box.size() * points_per_index >= min_points_for_threads;
+    [[maybe_unused]] const bool is_threaded =
+        box.size() * points_per_index >= min_points_for_threads;
     if constexpr (Dim == 2) {
 #pragma omp parallel for schedule(static) if (is_threaded)
         for (int j = box.lo[1]; j < box.hi[1]; ++j) {
@@ -87,7 +90,7 @@ template <int Dim, class G>
 [[nodiscard]] double max_over(const Box<Dim>& box, G&& g)
 {
     double result = 0.0;
-    const bool is_threaded = box.size() >= min_points_for_threads;
+    [[maybe_unused]] const bool is_threaded = box.size() >= min_points_for_threads;
     if constexpr (Dim == 2) {
 #pragma omp parallel for schedule(static) reduction(max : result) if (is_threaded)
         for (int j = box.lo[1]; j < box.hi[1]; ++j) {
@@ -115,7 +118,7 @@ template <int Dim, class G>
     Box<Dim> rows = box;
     rows.hi[0] = rows.lo[0] + 1;
     double result = 0.0;
-    const bool is_threaded = box.size() >= min_points_for_threads;
+    [[maybe_unused]] const bool is_threaded = box.size() >= min_points_for_threads;
     if constexpr (Dim == 2) {
 #pragma omp parallel for schedule(static) reduction(max : result) if (is_threaded)
         for (int j = rows.lo[1]; j < rows.hi[1]; ++j) {
@@ -140,7 +143,7 @@ template <int Dim, class G>
     const int outer = Dim - 1;
     const int n_slabs = std::max(box.extent(outer), 0);
     std::vector<double> partial(static_cast<std::size_t>(n_slabs), 0.0);
-    const bool is_threaded = box.size() >= min_points_for_threads;
+    [[maybe_unused]] const bool is_threaded = box.size() >= min_points_for_threads;
 #pragma omp parallel for schedule(static) if (is_threaded)
     for (int s = 0; s < n_slabs; ++s) {
         Box<Dim> slab = box;

@@ -13,7 +13,9 @@ namespace fddem {
 std::string RunSummary::to_json() const
 {
     toml::table root;
-    for (const auto& [key, value] : values_) {
+    for (const auto& entry : values_) {
+        // Not a structured binding: clang 14 cannot capture one in a lambda (C++20 P1091).
+        const std::string& key = entry.first;
         std::visit(
             [&](const auto& v) {
                 using T = std::decay_t<decltype(v)>;
@@ -23,7 +25,7 @@ std::string RunSummary::to_json() const
                     root.insert(key, v);
                 }
             },
-            value);
+            entry.second);
     }
     toml::table phases;
     for (const auto& [phase, seconds] : phases_) {
