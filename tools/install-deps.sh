@@ -5,6 +5,7 @@ set -euo pipefail
 packages=(
     build-essential cmake ninja-build pkg-config git
     clang-format clang-tidy
+    clang libclang-rt-14-dev
     libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
     libfftw3-dev libhypre-dev libopenmpi-dev openmpi-bin zlib1g-dev
     libgtest-dev libgmock-dev libbenchmark-dev

@@ -2,7 +2,8 @@
 # One command from a fresh Debian 12 machine to the default test run: installs the build
 # dependencies (as root), builds the release preset with -Werror and runs the unit,
 # verification and regression tests (under 15 minutes on two cores). With --sanitize it also
-# builds the dev preset (ASan + UBSan) and runs the unit tests under the sanitizers.
+# builds the dev preset (ASan + UBSan) and runs the unit tests under the sanitizers, then fuzzes
+# the case reader for 60 s (tools/fuzz.sh: clang + libFuzzer, only the reader is built).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./tools/install-deps.sh
@@ -24,4 +25,6 @@ if [ "${1:-}" = "--sanitize" ]; then
     cmake --build --preset dev -j "$jobs"
     echo "== unit tests under ASan + UBSan"
     ctest --preset dev -j "$jobs"
+    echo "== fuzzing the case reader (60 s)"
+    ./tools/fuzz.sh 60
 fi

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// libFuzzer target for the case reader (issue 5, item 4): arbitrary bytes go through
+// read_case_string, the parse-and-check that `fddem run` does before any work. An InputError is
+// the expected answer to bad input; anything else is a finding: a crash, a sanitizer report, a
+// hang, another exception, or a case whose "case as run" (written to every run directory and
+// read back by `fddem run --restart`) does not read back to itself.
+//
+// Build and run: tools/fuzz.sh [SECONDS] (preset `fuzz`, clang + libFuzzer + ASan + UBSan).
+
+#include "fddem/core/errors.hpp"
+#include "fddem/io/case_reader.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <string_view>
+
+namespace {
+
+[[noreturn]] void report(const char* what, const std::string& detail)
+{
+    std::fprintf(stderr, "fuzz_case_reader: %s: %s\n", what, detail.c_str());
+    std::abort(); // libFuzzer saves the input as crash-<sha1>
+}
+
+/// The case text after its two header lines (which name the source file).
+std::string_view body(const std::string& as_run)
+{
+    const auto blank = as_run.find("\n\n");
+    return blank == std::string::npos ? std::string_view(as_run)
+                                      : std::string_view(as_run).substr(blank);
+}
+
+void read_back(const fddem::CaseConfig& first)
+{
+    try {
+        const fddem::CaseConfig second = fddem::read_case_string(first.as_run, "case.toml");
+        if (body(second.as_run) != body(first.as_run)) {
+            report("the case as run reads back to a different case", first.as_run);
+        }
+    } catch (const fddem::InputError& e) {
+        report("the case as run does not read back", e.formatted() + "\n" + first.as_run);
+    }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): libFuzzer hands out bytes
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    try {
+        const fddem::CaseConfig config = fddem::read_case_string(text, "fuzz.toml");
+        read_back(config);
+    } catch (const fddem::InputError& e) {
+        (void)e.formatted(); // what `fddem run` prints, exit status 2
+    } catch (const std::exception& e) {
+        report("not an InputError", e.what());
+    } catch (...) {
+        report("not an InputError", "an exception of unknown type");
+    }
+    return 0;
+}
