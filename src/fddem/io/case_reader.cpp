@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -42,6 +43,26 @@ std::size_t edit_distance(std::string_view a, std::string_view b)
 namespace {
 
 const std::string override_source = "--set";
+
+/// The wall keys of [walls]: the low and the high side of each axis.
+constexpr const char* wall_names[3][2] = {
+    {"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}};
+
+/// Extreme (but valid) inputs can overflow what is derived from them; the reader checks each
+/// derived value and names the inputs. Floating-point traps (which the tests enable, STYLE.md
+/// §10) are held meanwhile, and the caller's environment is restored afterwards.
+class FloatingPointHold {
+public:
+    FloatingPointHold() { std::feholdexcept(&saved_); }
+    ~FloatingPointHold() { std::fesetenv(&saved_); }
+    FloatingPointHold(const FloatingPointHold&) = delete;
+    FloatingPointHold& operator=(const FloatingPointHold&) = delete;
+    FloatingPointHold(FloatingPointHold&&) = delete;
+    FloatingPointHold& operator=(FloatingPointHold&&) = delete;
+
+private:
+    std::fenv_t saved_{};
+};
 
 /// Where things came from, for messages: the file, or "--set" for overridden keys.
 class Locator {
@@ -356,9 +377,13 @@ public:
         fill_defaults_and_check();
         CaseConfig c = convert();
         check_contradictions(c);
-        derive(c);
-        check_bodies(c);
-        derive_contact(c);
+        drop_periodic_walls(c);
+        {
+            const FloatingPointHold hold;
+            derive(c);
+            check_bodies(c);
+            derive_contact(c);
+        }
         std::ostringstream as_run;
         as_run << "# The case as run by fddem: defaults filled in and --set overrides applied.\n"
                << "# Source: " << where_.file() << "\n\n"
@@ -530,10 +555,9 @@ private:
         c.size = as_reals(*node("domain", "size"));
         c.cells = as_integers(*node("domain", "cells"));
         c.periodic = as_booleans(*node("domain", "periodic"), dimension_);
-        const char* walls[3][2] = {{"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}};
         for (int d = 0; d < dimension_; ++d) {
-            c.wall_velocity.push_back(
-                {as_reals(*node("walls", walls[d][0])), as_reals(*node("walls", walls[d][1]))});
+            c.wall_velocity.push_back({as_reals(*node("walls", wall_names[d][0])),
+                                       as_reals(*node("walls", wall_names[d][1]))});
         }
         for (int d = 0; d < dimension_; ++d) {
             c.boundary_kind.push_back(
@@ -656,6 +680,8 @@ private:
                         "[nondimensional] needs a body: its diameter is the length scale");
         }
         const double diameter = c.bodies.front().diameter;
+        const std::string nondimensional_inputs =
+            "the values of [nondimensional] with fluid.density and the first body's diameter";
         if (!c.density_ratio) {
             c.viscosity = c.density * c.characteristic_velocity * diameter / *c.reynolds;
         } else {
@@ -670,9 +696,17 @@ private:
                             "fluid.gravity is derived from [nondimensional] (eq. 21); do not give "
                             "both");
             }
+            // The case as run records it in [derived] only: its zero default, left in [fluid],
+            // would read back as a gravity given with [nondimensional].
+            doc_.get_as<toml::table>("fluid")->erase("gravity");
             const DerivedScales scales =
                 derive_scales(*c.reynolds, *c.density_ratio, c.size[0] / diameter, c.density,
                               diameter, c.characteristic_velocity);
+            check_derived("nondimensional", "body density", scales.body_density,
+                          nondimensional_inputs);
+            check_derived("nondimensional", "gravity", scales.gravity, nondimensional_inputs);
+            check_derived("nondimensional", "wall factor", scales.wall_factor,
+                          nondimensional_inputs);
             c.viscosity = scales.viscosity;
             c.wall_factor = scales.wall_factor;
             for (BodyConfig& b : c.bodies) {
@@ -688,8 +722,22 @@ private:
             derived_.insert_or_assign("body_density", scales.body_density);
             derived_.insert_or_assign("wall_factor", scales.wall_factor);
         }
+        check_derived("nondimensional", "viscosity", c.viscosity, nondimensional_inputs);
         derived_.insert_or_assign("viscosity", c.viscosity);
         doc_.insert_or_assign("derived", derived_);
+    }
+
+    /// A value fddem derives (recorded in [derived]) must be a finite positive number; when
+    /// extreme inputs overflow or underflow it, stop at `section` and say which inputs (`from`).
+    void check_derived(const std::string& section, const std::string& name, double value,
+                       const std::string& from) const
+    {
+        if (!(value > 0.0) || !std::isfinite(value)) {
+            where_.fail(section, doc_.get(section),
+                        fmt::format("the derived {} is {:g}, not a finite positive number: {} "
+                                    "are out of any usable range",
+                                    name, value, from));
+        }
     }
 
     /// Bodies: the right shape for the dimension, inside the box, apart, resolved by the grid.
@@ -968,6 +1016,12 @@ private:
                     duration != nullptr ? duration->value<double>().value_or(c.dt) : c.dt;
                 law = LinearSpringDashpot::from_restitution(e, t, lightest);
             }
+            const std::string inputs = fmt::format(
+                "the contact parameters and the lightest free body's mass ({:g} kg)", lightest);
+            check_derived("contact", "contact stiffness", law.stiffness, inputs);
+            if (!std::isfinite(law.damping)) {
+                check_derived("contact", "contact damping", law.damping, inputs);
+            }
             law.tangential_ratio = c.contact_tangential_ratio;
             const LinearSpringDashpot model(law, lightest);
             c.contact_stiffness = law.stiffness;
@@ -985,28 +1039,64 @@ private:
     }
 
     /// N_i: `contact.substeps`, or enough for 80 sub-steps in the shortest collision `shortest`
-    /// [s]; at least 10 are required.
+    /// [s] (at most contact.substeps' upper limit); at least 10 are required.
     void set_substeps(CaseConfig& c, double shortest) const
     {
         const toml::node* substeps = node("contact", "substeps");
         constexpr double min_per_collision = 10.0;
         constexpr double auto_per_collision = 80.0;
+        const double max_substeps = spec("contact", "substeps").max;
+        const bool is_resolvable = shortest > 0.0 && std::isfinite(shortest) &&
+                                   std::ceil(min_per_collision * c.dt / shortest) <= max_substeps;
+        if (!is_resolvable || !(c.contact_duration > 0.0) || !std::isfinite(c.contact_duration)) {
+            where_.fail(
+                "contact", doc_.get("contact"),
+                fmt::format("the contact parameters give a shortest collision of {:.3g} s and a "
+                            "contact_duration of {:.3g} s; {:g} sub-steps per collision need a "
+                            "finite duration of at least {:.3g} s (time.dt / {:.0f}, the most DEM "
+                            "sub-steps allowed): change the contact parameters ({}) or time.dt",
+                            shortest, c.contact_duration, min_per_collision,
+                            min_per_collision * c.dt / max_substeps, max_substeps,
+                            c.contact_model == "linear"
+                                ? "contact.stiffness, or contact.restitution and duration"
+                                : "young_modulus, contact.impact_velocity"));
+        }
         const auto given_substeps = substeps->value<std::int64_t>().value_or(0);
         if (given_substeps == 0) {
-            c.contact_substeps =
-                std::max(1, static_cast<int>(std::ceil(auto_per_collision * c.dt / shortest)));
+            c.contact_substeps = static_cast<int>(
+                std::clamp(std::ceil(auto_per_collision * c.dt / shortest), 1.0, max_substeps));
             return;
         }
         c.contact_substeps = static_cast<int>(given_substeps);
         const double per_collision = shortest / (c.dt / static_cast<double>(given_substeps));
         if (per_collision < min_per_collision) {
-            where_.fail(
-                "contact.substeps", substeps,
-                fmt::format("{} DEM sub-steps per time step resolve a collision "
-                            "(duration {:.3g} s) with only {:.1f} sub-steps; at least "
-                            "{:g} are needed: use substeps >= {} (or 0 for automatic)",
-                            given_substeps, shortest, per_collision, min_per_collision,
-                            static_cast<long>(std::ceil(min_per_collision * c.dt / shortest))));
+            where_.fail("contact.substeps", substeps,
+                        fmt::format("{} DEM sub-steps per time step resolve a collision "
+                                    "(duration {:.3g} s) with only {:.1f} sub-steps; at least "
+                                    "{:g} are needed: use substeps >= {:.0f} (or 0 for automatic)",
+                                    given_substeps, shortest, per_collision, min_per_collision,
+                                    std::ceil(min_per_collision * c.dt / shortest)));
+        }
+    }
+
+    /// The schema's entry for `section.name`.
+    const KeySpec& spec(const std::string& section, const std::string& name) const
+    {
+        return *std::find_if(schema_.begin(), schema_.end(), [&](const KeySpec& s) {
+            return s.section == section && s.name == name;
+        });
+    }
+
+    /// A periodic axis has no walls, so the case as run does not list the default (zero)
+    /// velocities filled in for them: read back, they would be walls given on a periodic axis.
+    void drop_periodic_walls(const CaseConfig& c)
+    {
+        toml::table& section = *doc_.get_as<toml::table>("walls");
+        for (int d = 0; d < dimension_; ++d) {
+            if (c.periodic[static_cast<std::size_t>(d)]) {
+                section.erase(wall_names[d][0]);
+                section.erase(wall_names[d][1]);
+            }
         }
     }
 
@@ -1061,11 +1151,10 @@ private:
                         fmt::format("the time step {:g} s is longer than the end time {:g} s", c.dt,
                                     *c.end_time));
         }
-        const char* walls[3][2] = {{"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}};
         for (int d = 0; d < dimension_; ++d) {
             for (int side = 0; side < 2; ++side) {
-                const std::string key = std::string("walls.") + walls[d][side];
-                const toml::node* n = node("walls", walls[d][side]);
+                const std::string key = std::string("walls.") + wall_names[d][side];
+                const toml::node* n = node("walls", wall_names[d][side]);
                 const bool is_given = n != nullptr && defaulted_.count(key) == 0;
                 if (c.periodic[static_cast<std::size_t>(d)] && is_given) {
                     where_.fail(key, n,

@@ -10,9 +10,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "support/files_and_programs.hpp"
 
 namespace fddem {
 namespace {
@@ -581,6 +584,60 @@ std::vector<BadCase> bad_cases()
          0,
          "domain.cells",
          "expected [integer; dim]"},
+        // Extreme values whose derived quantities overflow (found while fuzzing the reader,
+        // docs/testing.md): before, a float-to-int overflow in the DEM sub-step count (undefined
+        // behaviour), a run with an infinite viscosity or collision time, or a NaN damping
+        // reported against a key the case does not give.
+        {"contact_too_stiff_to_resolve",
+         v + body + "[contact]\nstiffness = 1e300\n",
+         {},
+         f,
+         22,
+         "contact",
+         "the contact parameters give a shortest collision of 1.39e-150 s and a "
+         "contact_duration of 1.97e-150 s; 10 sub-steps per collision need a finite duration of "
+         "at least 1e-08 s (time.dt / 10000000, the most DEM sub-steps allowed): change the "
+         "contact parameters (contact.stiffness, or contact.restitution and duration) or time.dt"},
+        {"contact_duration_underflow",
+         v + body + "[contact]\nrestitution = 0.5\nduration = 1e-300\n",
+         {},
+         f,
+         22,
+         "contact",
+         "the derived contact stiffness is inf, not a finite positive number: the contact "
+         "parameters and the lightest free body's mass (0.392699 kg) are out of any usable range"},
+        {"hertz_impact_velocity_overflow",
+         v + body +
+             "[contact]\nmodel = \"hertz_mindlin\"\nyoung_modulus = 1e9\nimpact_velocity = 1e300\n",
+         {},
+         f,
+         22,
+         "contact",
+         "the contact parameters give a shortest collision of inf s and a contact_duration of inf "
+         "s; 10 sub-steps per collision need a finite duration of at least 1e-08 s (time.dt / "
+         "10000000, the most DEM sub-steps allowed): change the contact parameters "
+         "(young_modulus, contact.impact_velocity) or time.dt"},
+        {"nondimensional_viscosity_overflow",
+         replace(v, "viscosity = 0.01\n", "") + body +
+             "[nondimensional]\nreynolds = 1e-300\nvelocity = 1e300\n",
+         {},
+         f,
+         21,
+         "nondimensional",
+         "the derived viscosity is inf, not a finite positive number: the values of "
+         "[nondimensional] with fluid.density and the first body's diameter are out of any "
+         "usable range"},
+        {"nondimensional_body_mass_overflow",
+         replace(replace(v, "viscosity = 0.01\n", ""), "y_high = [1.0, 0.0]",
+                 "y_high = [0.0, 0.0]") +
+             replace(body, "density = 2.0\n", "") +
+             "[nondimensional]\nreynolds = 0.1\ndensity_ratio = 1e300\n",
+         {},
+         f,
+         0, // no [contact] section: every contact value is a default
+         "contact",
+         "not a finite positive number: the contact parameters and the lightest free body's mass "
+         "(1.9635e+299 kg) are out of any usable range"},
     };
 }
 
@@ -602,6 +659,86 @@ TEST_P(BadInput, StopsWithOneClearMessage)
 
 INSTANTIATE_TEST_SUITE_P(CaseReader, BadInput, ::testing::ValuesIn(bad_cases()),
                          [](const auto& param_info) { return std::string(param_info.param.name); });
+
+/// The case after its two header lines (which name the source file).
+std::string case_body(const std::string& as_run)
+{
+    return as_run.substr(as_run.find("\n\n"));
+}
+
+/// The case as run (each run directory's case.toml, which `fddem run --restart` reads) reads
+/// back to itself. Found by fuzzing (fuzz/fuzz_case_reader.cpp): the zero defaults filled in
+/// for the walls of a periodic axis, and for fluid.gravity beside [nondimensional], read back
+/// as given keys ("axis 0 is periodic", "fluid.gravity is derived from [nondimensional]").
+void expect_reads_back(const std::string& text, const std::string& name)
+{
+    SCOPED_TRACE(name);
+    const CaseConfig first = read_case_string(text, name);
+    CaseConfig second;
+    try {
+        second = read_case_string(first.as_run, "case.toml");
+    } catch (const InputError& e) {
+        FAIL() << "the case as run does not read back: " << e.formatted();
+    }
+    EXPECT_EQ(case_body(second.as_run), case_body(first.as_run));
+    EXPECT_EQ(second.periodic, first.periodic);
+    EXPECT_EQ(second.gravity, first.gravity);
+    EXPECT_EQ(second.wall_velocity, first.wall_velocity);
+}
+
+TEST(CaseReader, PeriodicCaseAsRunReadsBack)
+{
+    // The fuzzer's input: this 3D case, periodic in x and z.
+    expect_reads_back(R"([domain]
+size = [1.0, 1.0, 1.0]
+cells = [8, 8, 8]
+periodic = [true, false, true]
+[fluid]
+density = 1.0
+viscosity = 1.0
+[time]
+dt = 0.1
+end = 1.0
+)",
+                      "periodic.toml");
+    expect_reads_back(
+        replace(valid_case, "cells = [16, 32]", "cells = [16, 32]\nperiodic = [true, false]"),
+        "periodic_x.toml");
+}
+
+TEST(CaseReader, NondimensionalCaseAsRunReadsBack)
+{
+    // The fuzzer's input (the paper's Fig. 3 and 4 cases failed the same way).
+    expect_reads_back(R"([domain]
+size = [4.0, 8.0]
+cells = [64, 128]
+[fluid]
+density = 1.0
+[nondimensional]
+reynolds = 0.1
+density_ratio = 1.5
+[time]
+dt = 0.01
+end = 1.0
+[[bodies]]
+diameter = 1.0
+position = [2.0, 6.0]
+)",
+                      "nondimensional.toml");
+}
+
+TEST(CaseReader, EveryRepositoryCaseAsRunReadsBack)
+{
+    int n_cases = 0;
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(std::string(FDDEM_SOURCE_DIR) + "/cases")) {
+        if (entry.path().filename() == "case.toml") {
+            expect_reads_back(test::file_contents(entry.path()), entry.path().string());
+            ++n_cases;
+        }
+    }
+    EXPECT_GE(n_cases, 10); // cases/ held 10 case files when this test was written
+}
 
 TEST(CaseReader, ContactStiffnessAndSubstepsAreDerivedFromRestitutionAndDuration)
 {
