@@ -10,9 +10,10 @@
 #include "fddem/core/errors.hpp"
 #include "fddem/io/case_reader.hpp"
 
+#include <fmt/format.h>
+
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <string>
@@ -22,7 +23,7 @@ namespace {
 
 [[noreturn]] void report(const char* what, const std::string& detail)
 {
-    std::fprintf(stderr, "fuzz_case_reader: %s: %s\n", what, detail.c_str());
+    fmt::print(stderr, "fuzz_case_reader: {}: {}\n", what, detail);
     std::abort(); // libFuzzer saves the input as crash-<sha1>
 }
 
@@ -48,6 +49,7 @@ void read_back(const fddem::CaseConfig& first)
 
 } // namespace
 
+// NOLINTNEXTLINE(readability-identifier-naming): the name libFuzzer calls
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): libFuzzer hands out bytes

@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <array>
 #include <cfenv>
 #include <cmath>
 #include <fstream>
@@ -45,8 +46,8 @@ namespace {
 const std::string override_source = "--set";
 
 /// The wall keys of [walls]: the low and the high side of each axis.
-constexpr const char* wall_names[3][2] = {
-    {"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}};
+constexpr std::array<std::array<const char*, 2>, 3> wall_names = {
+    {{"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}}};
 
 /// Extreme (but valid) inputs can overflow what is derived from them; the reader checks each
 /// derived value and names the inputs. Floating-point traps (which the tests enable, STYLE.md
@@ -555,9 +556,9 @@ private:
         c.size = as_reals(*node("domain", "size"));
         c.cells = as_integers(*node("domain", "cells"));
         c.periodic = as_booleans(*node("domain", "periodic"), dimension_);
-        for (int d = 0; d < dimension_; ++d) {
-            c.wall_velocity.push_back({as_reals(*node("walls", wall_names[d][0])),
-                                       as_reals(*node("walls", wall_names[d][1]))});
+        for (std::size_t d = 0; d < c.size.size(); ++d) {
+            c.wall_velocity.push_back({as_reals(*node("walls", wall_names.at(d)[0])),
+                                       as_reals(*node("walls", wall_names.at(d)[1]))});
         }
         for (int d = 0; d < dimension_; ++d) {
             c.boundary_kind.push_back(
@@ -1080,7 +1081,7 @@ private:
     }
 
     /// The schema's entry for `section.name`.
-    const KeySpec& spec(const std::string& section, const std::string& name) const
+    [[nodiscard]] const KeySpec& spec(const std::string& section, const std::string& name) const
     {
         return *std::find_if(schema_.begin(), schema_.end(), [&](const KeySpec& s) {
             return s.section == section && s.name == name;
@@ -1092,10 +1093,10 @@ private:
     void drop_periodic_walls(const CaseConfig& c)
     {
         toml::table& section = *doc_.get_as<toml::table>("walls");
-        for (int d = 0; d < dimension_; ++d) {
-            if (c.periodic[static_cast<std::size_t>(d)]) {
-                section.erase(wall_names[d][0]);
-                section.erase(wall_names[d][1]);
+        for (std::size_t d = 0; d < c.periodic.size(); ++d) {
+            if (c.periodic[d]) {
+                section.erase(wall_names.at(d)[0]);
+                section.erase(wall_names.at(d)[1]);
             }
         }
     }
@@ -1153,8 +1154,10 @@ private:
         }
         for (int d = 0; d < dimension_; ++d) {
             for (int side = 0; side < 2; ++side) {
-                const std::string key = std::string("walls.") + wall_names[d][side];
-                const toml::node* n = node("walls", wall_names[d][side]);
+                const char* wall =
+                    wall_names.at(static_cast<std::size_t>(d)).at(static_cast<std::size_t>(side));
+                const std::string key = std::string("walls.") + wall;
+                const toml::node* n = node("walls", wall);
                 const bool is_given = n != nullptr && defaulted_.count(key) == 0;
                 if (c.periodic[static_cast<std::size_t>(d)] && is_given) {
                     where_.fail(key, n,
