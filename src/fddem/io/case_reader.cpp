@@ -378,7 +378,7 @@ public:
         fill_defaults_and_check();
         CaseConfig c = convert();
         check_contradictions(c);
-        drop_periodic_walls(c);
+        drop_absent_sides(c);
         {
             const FloatingPointHold hold;
             derive(c);
@@ -560,9 +560,9 @@ private:
             c.wall_velocity.push_back({as_reals(*node("walls", wall_names.at(d)[0])),
                                        as_reals(*node("walls", wall_names.at(d)[1]))});
         }
-        for (int d = 0; d < dimension_; ++d) {
+        for (std::size_t d = 0; d < c.size.size(); ++d) {
             c.boundary_kind.push_back(
-                {text("boundaries", walls[d][0]), text("boundaries", walls[d][1])});
+                {text("boundaries", wall_names.at(d)[0]), text("boundaries", wall_names.at(d)[1])});
         }
         c.inflow_profile = text("inflow", "profile");
         if (node("inflow", "velocity") != nullptr) {
@@ -1088,15 +1088,22 @@ private:
         });
     }
 
-    /// A periodic axis has no walls, so the case as run does not list the default (zero)
-    /// velocities filled in for them: read back, they would be walls given on a periodic axis.
-    void drop_periodic_walls(const CaseConfig& c)
+    /// The case as run leaves out the defaults filled in for sides that do not exist or are
+    /// not walls: both sides of a periodic axis ([walls] velocities and [boundaries] kinds), and
+    /// the wall velocity of an inflow or outflow side. Read back, they would be given values.
+    void drop_absent_sides(const CaseConfig& c)
     {
-        toml::table& section = *doc_.get_as<toml::table>("walls");
+        toml::table& walls = *doc_.get_as<toml::table>("walls");
+        toml::table* boundaries = doc_.get_as<toml::table>("boundaries");
         for (std::size_t d = 0; d < c.periodic.size(); ++d) {
-            if (c.periodic[d]) {
-                section.erase(wall_names.at(d)[0]);
-                section.erase(wall_names.at(d)[1]);
+            for (std::size_t side = 0; side < 2; ++side) {
+                const char* name = wall_names.at(d).at(side);
+                if (c.periodic[d] || c.boundary_kind[d][side] != "wall") {
+                    walls.erase(name);
+                }
+                if (c.periodic[d] && boundaries != nullptr) {
+                    boundaries->erase(name);
+                }
             }
         }
     }
@@ -1109,7 +1116,6 @@ private:
         bool has_inflow = false;
         bool has_outflow = false;
         const toml::node* first_inflow = nullptr;
-        const char* sides[3][2] = {{"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}};
         for (int d = 0; d < dimension_; ++d) {
             if (c.periodic[static_cast<std::size_t>(d)]) {
                 continue;
@@ -1119,7 +1125,8 @@ private:
                     c.boundary_kind[static_cast<std::size_t>(d)][static_cast<std::size_t>(side)];
                 if (kind == "inflow" && !has_inflow) {
                     has_inflow = true;
-                    first_inflow = node("boundaries", sides[d][side]);
+                    first_inflow = node("boundaries", wall_names.at(static_cast<std::size_t>(d))
+                                                          .at(static_cast<std::size_t>(side)));
                 }
                 has_outflow = has_outflow || kind == "outflow";
             }
@@ -1164,8 +1171,8 @@ private:
                                 "axis " + std::to_string(d) +
                                     " is periodic (domain.periodic): it has no walls");
                 }
-                const std::string boundary_key = std::string("boundaries.") + walls[d][side];
-                const toml::node* kind_node = node("boundaries", walls[d][side]);
+                const std::string boundary_key = std::string("boundaries.") + wall;
+                const toml::node* kind_node = node("boundaries", wall);
                 const std::string& kind =
                     c.boundary_kind[static_cast<std::size_t>(d)][static_cast<std::size_t>(side)];
                 if (c.periodic[static_cast<std::size_t>(d)] &&
@@ -1176,8 +1183,8 @@ private:
                 }
                 if (kind != "wall" && is_given) {
                     where_.fail(key, n,
-                                "the " + std::string(walls[d][side]) + " side is an " + kind +
-                                    " (" + boundary_key +
+                                "the " + std::string(wall) + " side is an " + kind + " (" +
+                                    boundary_key +
                                     "), not a wall: it takes no wall "
                                     "velocity");
                 }
