@@ -28,8 +28,8 @@ template <int Dim, class Model>
 class ContactForces {
 public:
     ContactForces(std::size_t n, const DemWalls<Dim>& walls, const Model& model,
-                  ContactHistory<Dim>& history)
-        : force(n), torque(n), walls_(walls), model_(model), history_(history)
+                  ContactHistory<Dim>& history, double margin)
+        : force(n), torque(n), walls_(walls), model_(model), history_(history), margin_(margin)
     {
     }
 
@@ -59,6 +59,7 @@ public:
             const ContactGeometry<Dim> g =
                 ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]));
             if (g.overlap <= 0.0) {
+                mark_if_near(g.overlap, a, b, outcome);
                 continue;
             }
             apply(g, a, b, {i, j}, make_contact_pair(side_of(bodies[a]), side_of(bodies[b])),
@@ -78,6 +79,7 @@ public:
                     const ContactGeometry<Dim> g =
                         ball_wall_contact(ball_of(bodies[a]), d, side, at,
                                           walls_.velocity[axis][static_cast<std::size_t>(side)]);
+                    mark_if_near(g.overlap, a, bodies.size(), outcome);
                     if (g.overlap > 0.0) {
                         apply(g, a, bodies.size(), wall_contact_key(static_cast<int>(a), d, side),
                               make_contact_pair(side_of(bodies[a]), wall_side(walls_.material)),
@@ -95,6 +97,19 @@ public:
     int in_contact = 0;
 
 private:
+    /// A pair apart by less than the margin counts as in contact (DemSettings::margin) but
+    /// exerts no force; `second` = n is a wall.
+    void mark_if_near(double overlap, std::size_t first, std::size_t second,
+                      DemOutcome<Dim>& outcome) const
+    {
+        if (overlap > -margin_) {
+            outcome.has_contact[first] = true;
+            if (second < force.size()) {
+                outcome.has_contact[second] = true;
+            }
+        }
+    }
+
     /// The model's normal force F_n n, the friction force F_t and the rolling torque on both
     /// bodies; `second` = n is a wall.
     void apply(const ContactGeometry<Dim>& g, std::size_t first, std::size_t second,
@@ -134,6 +149,7 @@ private:
     const DemWalls<Dim>& walls_;
     const Model& model_;
     ContactHistory<Dim>& history_;
+    double margin_;                ///< DemSettings::margin [m]
     ContactHistory<Dim> previous_; ///< the springs before this evaluation
     double step_ = 0.0;            ///< Δt_i [s]
     double stretch_ = 0.0;         ///< time over which the springs stretch now [s]
@@ -154,7 +170,7 @@ DemOutcome<Dim> advance_with(const Model& model, std::span<DemBody<Dim>> bodies,
     const double step = dt / settings.substeps;
     const double half = 0.5 * step;
     const double weight = 1.0 / settings.substeps; // each sub-step's share of the mean
-    ContactForces<Dim, Model> contacts(n, walls, model, history);
+    ContactForces<Dim, Model> contacts(n, walls, model, history, settings.margin);
     contacts.evaluate(bodies, cells, step, false, outcome);
     const auto kick = [&](std::size_t b) {
         DemBody<Dim>& body = bodies[b];

@@ -63,6 +63,10 @@ struct DemSettings {
     AnyContactModel model;
     double beta = 0.0; ///< velocity damping β of eq. (18) [kg/s]
     int substeps = 1;  ///< N_i
+    /// Bodies closer than this to another body or a wall at any sub-step count as in contact
+    /// for the step (has_contact) without a force: with the paper's coupling DEM then moves
+    /// them, instead of the fluid update, which cannot see them close in [m]. 0: touching only.
+    double margin = 0.0;
 };
 
 /// What the contacts did to each body over the step.

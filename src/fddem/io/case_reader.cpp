@@ -609,6 +609,7 @@ private:
         c.contact_model = text("contact", "model");
         c.contact_coupling = text("contact", "coupling");
         c.contact_beta = real("contact", "velocity_damping");
+        c.contact_margin = real("contact", "margin");
         if (const toml::array* bodies = find_table_array(doc_, "bodies")) {
             for (const toml::node& element : *bodies) {
                 const toml::table& t = *element.as_table();

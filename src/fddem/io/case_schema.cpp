@@ -266,6 +266,13 @@ std::vector<KeySpec> case_schema()
     s.push_back(ranged(key("contact", "velocity_damping", T::real, "kg/s", "0.0",
                            "Velocity damping β of eq. (18) (0: none, as in the paper)."),
                        0.0, inf, false, false));
+    s.push_back(ranged(key("contact", "margin", T::real, "m", "0.0",
+                           "Paper coupling: a body closer than this to another body or a wall "
+                           "during the DEM sub-steps is moved by DEM for the step, as one in "
+                           "contact (0: touching bodies only, as the paper). About h keeps "
+                           "crowded bodies from being pushed into each other by the fluid "
+                           "update within a step (docs/method.md §5)."),
+                       0.0, inf, false, false));
     s.push_back(ranged(key("contact", "substeps", T::integer, none, "0",
                            "DEM sub-steps N_i per time step (Δt_i = Δt/N_i); 0: enough for 80 "
                            "per pair collision. At least 10 per collision are required."),

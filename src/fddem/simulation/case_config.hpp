@@ -90,6 +90,7 @@ struct CaseConfig {
     double contact_stiffness = 0.0;         ///< k [N/m] (2D: per unit depth)
     double contact_damping = 0.0;           ///< c [N·s/m]
     double contact_beta = 0.0;              ///< velocity damping β [kg/s]
+    double contact_margin = 0.0;            ///< DemSettings::margin [m]
     int contact_substeps = 1;               ///< N_i
     double contact_duration = 0.0;          ///< wall collision of the lightest body [s] (derived)
     double contact_restitution = 1.0;       ///< its restitution (derived)

@@ -151,13 +151,13 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
     }
     if (model) {
         dem_ = DemSettings{std::move(*model), config.contact_beta,
-                           std::max(1, config.contact_substeps)};
+                           std::max(1, config.contact_substeps), config.contact_margin};
         is_paper_contact_ = config.contact_coupling == "paper";
         double largest = 0.0;
         for (const RigidBody<Dim>& body : bodies_) {
             largest = std::max(largest, body.shape.diameter);
         }
-        contact_cells_.emplace(grid_.origin(), grid_.length(), largest);
+        contact_cells_.emplace(grid_.origin(), grid_.length(), largest + config.contact_margin);
         walls_.origin = grid_.origin();
         walls_.length = grid_.length();
         walls_.material = config.wall_material;

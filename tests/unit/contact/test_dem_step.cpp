@@ -144,6 +144,30 @@ TEST(DemStep, NoTunnellingAtTwiceTheFastestImpactOfThePaperCases)
     EXPECT_GT(bodies[0].centre.y(), 0.125);
 }
 
+TEST(DemStep, BodiesWithinTheMarginCountAsInContactWithoutAForce)
+{
+    // Two disks 0.01 apart side by side, and one 0.01 above the floor; all at rest.
+    const std::vector<DemBody<2>> start{disk(Vec<2>(0.5, 3.0), Vec<2>::Zero()),
+                                        disk(Vec<2>(0.76, 3.0), Vec<2>::Zero()),
+                                        disk(Vec<2>(1.5, 0.135), Vec<2>::Zero())};
+    for (const double margin : {0.0, 0.005, 0.02}) {
+        std::vector<DemBody<2>> bodies = start;
+        DemSettings settings = linear({1e7, 0.0}, 10, bodies[0].mass);
+        settings.margin = margin;
+        CellList<2> cells(box.origin, box.length, 0.25 + margin);
+        ContactHistory<2> history;
+        const DemOutcome<2> outcome =
+            advance_contacts<2>(bodies, box, settings, 0.005, cells, history);
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            EXPECT_EQ(outcome.has_contact[b], margin > 0.01)
+                << "margin " << margin << ", body " << b;
+            EXPECT_EQ(outcome.mean_force[b], Vec<2>::Zero());
+            EXPECT_EQ(bodies[b].centre, start[b].centre);
+        }
+        EXPECT_EQ(outcome.max_overlap, 0.0);
+    }
+}
+
 TEST(DemStep, RestsOnTheFloorUnderItsWeight)
 {
     std::vector<DemBody<2>> bodies{disk(Vec<2>(1.0, 0.125), Vec<2>::Zero())};
