@@ -429,20 +429,48 @@ void Simulation<Dim>::roll_back_step()
 template <int Dim>
 std::string Simulation<Dim>::locate_non_finite_velocity() const
 {
-    for (int a = 0; a < Dim; ++a) {
-        std::optional<Index<Dim>> found; // serial: the first in storage order
-        for_each_cell_in_vtk_order(grid_.face_box(a), [&](const Index<Dim>& c) {
-            if (!found && !std::isfinite(state_.u[a](c))) {
+    // The first non-finite value in storage order (serial) of a field, at `where`'s position.
+    const auto first_in = [&](const GridArray<Dim>& field, const Box<Dim>& box, auto where,
+                              const std::string& name) -> std::optional<std::string> {
+        std::optional<Index<Dim>> found;
+        for_each_cell_in_vtk_order(box, [&](const Index<Dim>& c) {
+            if (!found && !std::isfinite(field(c))) {
                 found = c;
             }
         });
-        if (found) {
-            const Vec<Dim> x = grid_.face_centre(a, *found);
-            return fmt::format("velocity component {} not finite at ({:.6g})", a,
-                               fmt::join(x, ", "));
+        if (!found) {
+            return std::nullopt;
+        }
+        return fmt::format("{} not finite at ({:.6g})", name, fmt::join(where(*found), ", "));
+    };
+    for (int a = 0; a < Dim; ++a) {
+        const auto face = [&](const Index<Dim>& c) { return grid_.face_centre(a, c); };
+        if (auto at = first_in(state_.u[a], grid_.face_box(a), face,
+                               fmt::format("velocity component {}", a))) {
+            return *at;
+        }
+        if (auto at = first_in(state_.body_force[a], grid_.face_box(a), face,
+                               fmt::format("body force component {} (the markers' λ)", a))) {
+            return *at;
         }
     }
-    return "the momentum residual is not finite";
+    const auto cell = [&](const Index<Dim>& c) { return grid_.cell_centre(c); };
+    if (auto at = first_in(state_.p, grid_.cell_box(), cell, "pressure")) {
+        return *at;
+    }
+    // All finite: a residual overflowed. Where is the fastest fluid?
+    double fastest = 0.0;
+    std::string where;
+    for (int a = 0; a < Dim; ++a) {
+        for_each_cell_in_vtk_order(grid_.face_box(a), [&](const Index<Dim>& c) {
+            if (std::abs(state_.u[a](c)) > fastest) {
+                fastest = std::abs(state_.u[a](c));
+                where = fmt::format("{:.6g}", fmt::join(grid_.face_centre(a, c), ", "));
+            }
+        });
+    }
+    return fmt::format("the momentum residual is not finite (largest |u| {:.3g} at ({}))", fastest,
+                       where);
 }
 
 template <int Dim>
