@@ -17,4 +17,6 @@ target_link_libraries(fddem_hypre INTERFACE ${HYPRE_LIBRARY} MPI::MPI_C)
 
 if(FDDEM_ENABLE_OPENMP)
     find_package(OpenMP REQUIRED COMPONENTS CXX)
+    # FFTW's OpenMP build (libfftw3-dev ships it): the pressure transforms on all threads.
+    find_library(FFTW3_OMP_LIBRARY fftw3_omp REQUIRED)
 endif()

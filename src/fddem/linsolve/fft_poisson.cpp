@@ -9,7 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <mutex>
 #include <numbers>
+
+#ifdef FDDEM_HAVE_OPENMP
+#include <omp.h>
+#endif
 
 namespace fddem {
 
@@ -56,10 +61,21 @@ struct FftPoissonSolver<Dim>::Plans {
     }
 
     /// (Re)plans both transforms; planning overwrites `work`, which holds nothing between
-    /// solves.
+    /// solves. With OpenMP, on all of its threads (FFTW's threads split the independent 1-D
+    /// transforms, so a thread count gives the same result every run).
     void make()
     {
         destroy();
+#ifdef FDDEM_HAVE_OPENMP
+        // FFTW's thread support is process-wide and must be started once (FFTW manual §5.2).
+        static std::once_flag started;
+        std::call_once(started, [] {
+            if (fftw_init_threads() == 0) {
+                throw InternalError("FFTW could not start its threads");
+            }
+        });
+        fftw_plan_with_nthreads(omp_get_max_threads());
+#endif
         forward = fftw_plan_r2r(Dim, dims.data(), work, work, forward_kind.data(), flags);
         backward = fftw_plan_r2r(Dim, dims.data(), work, work, backward_kind.data(), flags);
         if (forward == nullptr || backward == nullptr) {
@@ -174,8 +190,12 @@ void FftPoissonSolver<Dim>::solve(const CellField<Dim>& rhs, CellField<Dim>& phi
     });
     fftw_execute(plans_->forward);
     double* work = plans_->work;
-    for (std::size_t k = 0; k < plans_->size; ++k) {
-        work[k] *= inverse_eigen_[k];
+    const double* inverse = inverse_eigen_.data();
+    const auto n = static_cast<std::ptrdiff_t>(plans_->size);
+    [[maybe_unused]] const bool is_threaded = plans_->size >= min_points_for_threads;
+#pragma omp parallel for schedule(static) if (is_threaded)
+    for (std::ptrdiff_t k = 0; k < n; ++k) {
+        work[k] *= inverse[k];
     }
     fftw_execute(plans_->backward);
     for_each_row(box, [&](const Index<Dim>& row) {
