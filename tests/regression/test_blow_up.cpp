@@ -13,6 +13,7 @@
 #include <fstream>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "support/files_and_programs.hpp"
 
@@ -20,6 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using fddem::test::file_contents;
+using fddem::test::lines_of;
 using fddem::test::ProgramResult;
 
 // The disk's centre starts at y = 0.5 and moves down 0.1 per step: its lowest markers are
@@ -83,23 +85,15 @@ long failed_step(const std::string& output)
 
 std::string last_row(const fs::path& csv)
 {
-    std::ifstream in(csv);
-    std::string line;
-    std::string last;
-    while (std::getline(in, line)) {
-        if (!line.empty()) {
-            last = line;
-        }
-    }
-    return last;
+    const std::vector<std::string> rows = lines_of(file_contents(csv));
+    return rows.empty() ? std::string() : rows.back();
 }
 
 /// solver.csv without its wall_seconds column (the last one).
 std::string solver_history(const fs::path& run)
 {
-    std::ifstream in(run / "solver.csv");
     std::string text;
-    for (std::string line; std::getline(in, line);) {
+    for (const std::string& line : lines_of(file_contents(run / "solver.csv"))) {
         text += line.substr(0, line.rfind(',')) + "\n";
     }
     return text;

@@ -89,16 +89,7 @@ constexpr int checkpoint_interval = 5;
 
 using Result = fddem::test::ProgramResult;
 using fddem::test::file_contents;
-
-std::vector<std::string> lines_of(const std::string& text)
-{
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        lines.push_back(line);
-    }
-    return lines;
-}
+using fddem::test::lines_of;
 
 /// Every file under `root` (relative path → contents).
 std::map<std::string, std::string> snapshot(const fs::path& root)
