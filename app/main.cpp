@@ -3,6 +3,7 @@
 // statuses (the library throws; only app/ decides how a failure ends the process).
 
 #include "fddem/core/errors.hpp"
+#include "fddem/linsolve/mpi_runtime.hpp"
 
 #include <CLI/CLI.hpp>
 #include <mpi.h>
@@ -14,15 +15,22 @@
 
 namespace {
 
-/// MPI for hypre: one process by default; `mpirun -n 1 fddem …` is the same run.
+/// MPI for hypre: one process by default; `mpirun -n 1 fddem …` is the same run. Started here
+/// only under a launcher (to refuse more than one process before any work); otherwise the first
+/// hypre solver starts it (fddem/linsolve/mpi_runtime.hpp). Ended here in either case.
 class MpiSession {
 public:
-    MpiSession(int* argc, char*** argv) { MPI_Init(argc, argv); }
+    MpiSession(int* argc, char*** argv)
+    {
+        if (fddem::is_started_by_mpi_launcher()) {
+            MPI_Init(argc, argv);
+        }
+    }
     MpiSession(const MpiSession&) = delete;
     MpiSession& operator=(const MpiSession&) = delete;
     MpiSession(MpiSession&&) = delete;
     MpiSession& operator=(MpiSession&&) = delete;
-    ~MpiSession() { MPI_Finalize(); }
+    ~MpiSession() { fddem::finish_mpi(); }
 };
 
 } // namespace
@@ -92,7 +100,11 @@ int main(int argc, char** argv)
     }
 
     int n_processes = 1;
-    MPI_Comm_size(MPI_COMM_WORLD, &n_processes);
+    int is_mpi_started = 0;
+    MPI_Initialized(&is_mpi_started);
+    if (is_mpi_started != 0) {
+        MPI_Comm_size(MPI_COMM_WORLD, &n_processes);
+    }
     if (n_processes > 1) {
         std::fprintf(stderr,
                      "fddem: runs on more than one MPI process are not supported yet "

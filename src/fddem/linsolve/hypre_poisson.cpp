@@ -3,6 +3,7 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/grid/loops.hpp"
+#include "fddem/linsolve/mpi_runtime.hpp"
 
 #include <HYPRE_struct_ls.h>
 #include <mpi.h>
@@ -86,6 +87,7 @@ HyprePoissonSolver<Dim>::HyprePoissonSolver(const MacGrid<Dim>& grid,
                                             double tolerance, int max_iterations)
     : grid_(grid), handles_(std::make_unique<Handles>()), values_(grid.n_cells())
 {
+    ensure_mpi_started();
     const MaskedFloatingPointTraps masked;
     Handles& h = *handles_;
     const Box<Dim> box = grid.owned_cells();
