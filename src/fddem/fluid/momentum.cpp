@@ -180,7 +180,7 @@ double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>
 
 template <int Dim>
 void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                    const MomentumSettings& settings, const MomentumSystem<Dim>& system, int axis,
+                    const MomentumSettings& settings, MomentumSystem<Dim>& system, int axis,
                     FluidState<Dim>& state)
 {
     const Box<Dim> box = unknown_faces(grid, bc, axis);
@@ -190,20 +190,43 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     const std::ptrdiff_t s_axis = grid.stride(axis);
     GridArray<Dim>& u_axis = state.u[axis];
     double* ua = u_axis.data();
-    const double* p = state.p.data();
-    const double* a_p = system.a_p.data();
-    const double* b = system.b.data();
-    const double* u_old = system.u_old.data();
     std::array<std::ptrdiff_t, Dim> strides{};
-    std::array<const double*, 2 * Dim> a_nb{};
     for (int d = 0; d < Dim; ++d) {
         strides[static_cast<std::size_t>(d)] = grid.stride(d);
-        a_nb[static_cast<std::size_t>(2 * d)] = system.a_nb[static_cast<std::size_t>(2 * d)].data();
-        a_nb[static_cast<std::size_t>(2 * d + 1)] =
-            system.a_nb[static_cast<std::size_t>(2 * d + 1)].data();
+    }
+    std::array<const double*, 2 * Dim> a_nb{};
+    std::array<double*, 2 * Dim> c_out{};
+    std::array<const double*, 2 * Dim> c_nb{};
+    for (std::size_t k = 0; k < a_nb.size(); ++k) {
+        a_nb[k] = system.a_nb[k].data();
+        c_out[k] = system.scaled_nb[k].data();
+        c_nb[k] = c_out[k];
     }
 
-    for (int sweep = 0; sweep < settings.sweeps; ++sweep) {
+    // The pressure gradient and the relaxation term stay fixed during the sweeps: fold them
+    // and 1/a_P into the scaled system once.
+    {
+        const double* p = state.p.data();
+        const double* a_p = system.a_p.data();
+        const double* b = system.b.data();
+        const double* u_old = system.u_old.data();
+        double* source = system.scaled_source.data();
+        for_each_row(box, [&](const Index<Dim>& row) {
+            const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
+            for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+                const std::ptrdiff_t o = row_offset + i;
+                const double scale = alpha / a_p[o];
+                source[o] = scale * (b[o] - (p[o] - p[o - s_axis]) * pressure_factor +
+                                     relax_factor * a_p[o] * u_old[o]);
+                for (std::size_t k = 0; k < c_out.size(); ++k) {
+                    c_out[k][o] = scale * a_nb[k][o];
+                }
+            }
+        });
+    }
+    const double* source = system.scaled_source.data();
+
+    const auto sweep = [&] {
         for (int colour = 0; colour < 2; ++colour) {
             // Red-black ordering: a face only reads faces of the other colour, so each
             // colour updates in parallel without races.
@@ -216,19 +239,106 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                 const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
                 for (int i = first; i < box.hi[0]; i += 2) {
                     const std::ptrdiff_t o = row_offset + i;
-                    double rhs = b[o] - (p[o] - p[o - s_axis]) * pressure_factor +
-                                 relax_factor * a_p[o] * u_old[o];
+                    double u_new = source[o];
                     for (int d = 0; d < Dim; ++d) {
                         const std::ptrdiff_t s = strides[static_cast<std::size_t>(d)];
-                        rhs += a_nb[static_cast<std::size_t>(2 * d)][o] * ua[o - s] +
-                               a_nb[static_cast<std::size_t>(2 * d + 1)][o] * ua[o + s];
+                        u_new += c_nb[static_cast<std::size_t>(2 * d)][o] * ua[o - s] +
+                                 c_nb[static_cast<std::size_t>(2 * d + 1)][o] * ua[o + s];
                     }
-                    ua[o] = alpha * rhs / a_p[o];
+                    ua[o] = u_new;
                 }
             });
             // Only periodic images are read with a non-zero coefficient during the sweeps
             // (wall neighbours are folded into the coefficients).
             fill_periodic_ghosts(grid, bc, u_axis);
+        }
+    };
+
+    if (settings.cycles == 0) {
+        for (int k = 0; k < settings.sweeps; ++k) {
+            sweep();
+        }
+        fill_velocity_ghosts(grid, bc, state.u);
+        return;
+    }
+
+    StencilView<Dim> fine;
+    for (int d = 0; d < Dim; ++d) {
+        const auto sd = static_cast<std::size_t>(d);
+        fine.n[sd] = box.extent(d);
+        fine.periodic[sd] = bc.periodic(d);
+        fine.stride[sd] = strides[sd];
+    }
+    fine.origin = grid.offset(box.lo);
+    fine.diagonal = system.a_p.data();
+    fine.diagonal_scale = 1.0 / alpha;
+    for (std::size_t k = 0; k < a_nb.size(); ++k) {
+        fine.a_nb[k] = a_nb[k];
+    }
+    if (system.is_coarse_stale || system.coarse_levels.empty()) {
+        build_coarse_levels(fine, system.coarse_levels);
+        system.is_coarse_stale = false;
+    }
+    const int pre_sweeps = settings.sweeps / 2;
+    const int post_sweeps = settings.sweeps - pre_sweeps;
+    const double* a_p = system.a_p.data();
+    for (int cycle = 0; cycle < settings.cycles; ++cycle) {
+        for (int k = 0; k < pre_sweeps; ++k) {
+            sweep();
+        }
+        if (!system.coarse_levels.empty()) {
+            CoarseLevel<Dim>& coarse = system.coarse_levels.front();
+            // The residual, summed over each block into the coarse right-hand side: one
+            // coarse row at a time, reading its fine rows with unit stride.
+            Box<Dim> coarse_rows;
+            coarse_rows.hi = coarse.n;
+            coarse_rows.hi[0] = 1;
+            for_each_index(
+                coarse_rows,
+                [&](const Index<Dim>& coarse_row) {
+                    const std::size_t out = coarse.offset(coarse_row);
+                    const auto width = static_cast<std::size_t>(coarse.n[0]);
+                    std::fill_n(coarse.rhs.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
+                    std::fill_n(coarse.x.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
+                    for (int member = 0; member < (1 << (Dim - 1)); ++member) {
+                        Index<Dim> i{};
+                        bool is_inside = true;
+                        for (int d = 1; d < Dim; ++d) {
+                            const auto sd = static_cast<std::size_t>(d);
+                            i[sd] = 2 * coarse_row[sd] + ((member >> (d - 1)) & 1);
+                            is_inside = is_inside && i[sd] < fine.n[sd];
+                        }
+                        if (!is_inside) {
+                            continue;
+                        }
+                        const std::ptrdiff_t row_offset = fine.at(i);
+                        for (int x = 0; x < fine.n[0]; ++x) {
+                            const std::ptrdiff_t o = row_offset + x;
+                            double scaled = source[o] - ua[o];
+                            for (int d = 0; d < Dim; ++d) {
+                                const std::ptrdiff_t s = strides[static_cast<std::size_t>(d)];
+                                scaled += c_nb[static_cast<std::size_t>(2 * d)][o] * ua[o - s] +
+                                          c_nb[static_cast<std::size_t>(2 * d + 1)][o] * ua[o + s];
+                            }
+                            coarse.rhs[out + static_cast<std::size_t>(x / 2)] +=
+                                a_p[o] / alpha * scaled;
+                        }
+                    }
+                },
+                (std::size_t{1} << Dim) * static_cast<std::size_t>(coarse.n[0]));
+            coarse_v_cycle(system.coarse_levels, 0, 2);
+            for_each_row(box, [&](const Index<Dim>& row) {
+                Index<Dim> i = row - box.lo;
+                const std::ptrdiff_t row_offset = fine.at(i);
+                for (int x = 0; x < fine.n[0]; ++x) {
+                    i[0] = x;
+                    ua[row_offset + x] += coarse.x[coarse.offset(coarse_index<Dim>(i))];
+                }
+            });
+            fill_periodic_ghosts(grid, bc, u_axis);
+        }
+        for (int k = 0; k < post_sweeps; ++k) {
+            sweep();
         }
     }
     fill_velocity_ghosts(grid, bc, state.u);
@@ -241,10 +351,8 @@ template double assemble_momentum<3>(const MacGrid<3>&, const BoundaryConditions
                                      const FluidProperties&, const MomentumSettings&,
                                      const FluidState<3>&, int, MomentumSystem<3>&);
 template void solve_momentum<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
-                                const MomentumSettings&, const MomentumSystem<2>&, int,
-                                FluidState<2>&);
+                                const MomentumSettings&, MomentumSystem<2>&, int, FluidState<2>&);
 template void solve_momentum<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
-                                const MomentumSettings&, const MomentumSystem<3>&, int,
-                                FluidState<3>&);
+                                const MomentumSettings&, MomentumSystem<3>&, int, FluidState<3>&);
 
 } // namespace fddem

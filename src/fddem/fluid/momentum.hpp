@@ -5,6 +5,7 @@
 
 #include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/fluid/fluid_state.hpp"
+#include "fddem/linsolve/aggregation_multigrid.hpp"
 
 #include <array>
 
@@ -15,23 +16,41 @@ namespace fddem {
 /// deferred convection correction, wall terms).
 template <int Dim>
 struct MomentumSystem {
-    explicit MomentumSystem(const MacGrid<Dim>& grid) : a_p(grid), b(grid), u_old(grid)
+    explicit MomentumSystem(const MacGrid<Dim>& grid)
+        : a_p(grid), b(grid), u_old(grid), scaled_source(grid)
     {
         for (auto& a : a_nb) {
             a = GridArray<Dim>(grid);
+        }
+        for (auto& c : scaled_nb) {
+            c = GridArray<Dim>(grid);
         }
     }
     GridArray<Dim> a_p;
     std::array<GridArray<Dim>, 2 * Dim> a_nb;
     GridArray<Dim> b;
     GridArray<Dim> u_old; ///< the iterate at assembly, for under-relaxation
+
+    // Scratch of solve_momentum (not state): the system divided by a_P/α, u_P = s + Σ c_nb u_nb,
+    // so that a sweep reads 2·Dim + 1 arrays besides u instead of 2·Dim + 5.
+    GridArray<Dim> scaled_source;
+    std::array<GridArray<Dim>, 2 * Dim> scaled_nb;
+    /// The multigrid's coarse levels, built from the coefficients of the solve that found
+    /// is_coarse_stale set. Their only role is to speed up the sweeps' convergence, so the
+    /// caller may keep them for several outer iterations (fddem keeps them for a time step).
+    std::vector<CoarseLevel<Dim>> coarse_levels;
+    bool is_coarse_stale = true;
 };
 
 struct MomentumSettings {
     double dt;                   ///< Δt [s]
     ConvectionScheme convection; ///< see ConvectionScheme
     double relaxation;           ///< α_u in (0, 1]
-    int sweeps;                  ///< red-black Gauss–Seidel sweeps per outer iteration
+    int sweeps;                  ///< red-black Gauss–Seidel sweeps per outer iteration, at most
+    /// Multigrid V-cycles per outer iteration (fddem/linsolve/aggregation_multigrid.hpp), each
+    /// with sweeps/2 sweeps before the coarse correction and the rest after; 0: Gauss–Seidel
+    /// sweeps alone.
+    int cycles = 1;
 };
 
 /// Assembles eqs. (7)–(8) for component `axis` about the current iterate `state.u` (Picard:
@@ -43,12 +62,13 @@ assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                   const FluidProperties& fluid, const MomentumSettings& settings,
                   const FluidState<Dim>& state, int axis, MomentumSystem<Dim>& system);
 
-/// Relaxes component `axis` of state.u towards the solution of its system with `sweeps`
-/// red-black Gauss–Seidel sweeps, with velocity under-relaxation (Patankar's a_P/α form).
-/// Ghosts are refilled between sweeps (periodic images lag by one colour).
+/// Relaxes component `axis` of state.u towards the solution of its system, with velocity
+/// under-relaxation (Patankar's a_P/α form): settings.cycles multigrid V-cycles smoothed by
+/// red-black Gauss–Seidel, or settings.sweeps sweeps alone if cycles is 0. Ghosts are
+/// refilled between sweeps (periodic images lag by one colour).
 template <int Dim>
 void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                    const MomentumSettings& settings, const MomentumSystem<Dim>& system, int axis,
+                    const MomentumSettings& settings, MomentumSystem<Dim>& system, int axis,
                     FluidState<Dim>& state);
 
 } // namespace fddem

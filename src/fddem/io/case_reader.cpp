@@ -585,6 +585,7 @@ private:
         c.velocity_relaxation = real("simple", "velocity_relaxation");
         c.pressure_relaxation = real("simple", "pressure_relaxation");
         c.momentum_sweeps = static_cast<int>(integer("simple", "momentum_sweeps"));
+        c.momentum_cycles = static_cast<int>(integer("simple", "momentum_cycles"));
         c.convection = text("simple", "convection");
         c.pressure_solver = text("simple", "pressure_solver");
         c.fft_planning = text("simple", "fft_planning");

@@ -155,9 +155,14 @@ std::vector<KeySpec> case_schema()
                            "Under-relaxation α_p of the pressure correction, eq. (10)."),
                        0.0, 1.0, true, false));
     s.push_back(ranged(key("simple", "momentum_sweeps", T::integer, none, "4",
-                           "Red-black Gauss–Seidel sweeps of the momentum equations per outer "
-                           "iteration."),
+                           "Red-black Gauss–Seidel sweeps of the momentum equations per V-cycle "
+                           "(half before the coarse correction, half after), or per outer "
+                           "iteration without cycles."),
                        1, 100, false, false));
+    s.push_back(ranged(key("simple", "momentum_cycles", T::integer, none, "1",
+                           "Multigrid V-cycles (additive correction) of the momentum equations "
+                           "per outer iteration; 0: Gauss–Seidel sweeps alone."),
+                       0, 20, false, false));
     s.push_back(choice(key("simple", "convection", T::string, none, "\"central\"",
                            "Convection: central (second order, by deferred correction) or "
                            "upwind (first order)."),

@@ -71,7 +71,8 @@ struct CaseConfig {
     int max_outer_iterations = 50;
     double velocity_relaxation = 1.0;
     double pressure_relaxation = 1.0;
-    int momentum_sweeps = 4;
+    int momentum_sweeps = 4; ///< Gauss–Seidel sweeps per V-cycle (or in all, without cycles)
+    int momentum_cycles = 1; ///< multigrid V-cycles per outer iteration (0: sweeps alone)
     std::string convection = "central";    ///< "central" (deferred correction) or "upwind"
     std::string pressure_solver = "auto";  ///< "auto", "fft" or "hypre"
     std::string fft_planning = "estimate"; ///< "estimate" or "measure"

@@ -88,10 +88,10 @@ template <int Dim>
 Simulation<Dim>::Simulation(const CaseConfig& config)
     : config_(config), grid_(make_grid<Dim>(config)),
       bc_(make_boundary_conditions<Dim>(config)), properties_{config.density, config.viscosity},
-      momentum_settings_{config.dt,
-                         config.convection == "upwind" ? ConvectionScheme::upwind
-                                                       : ConvectionScheme::central,
-                         config.velocity_relaxation, config.momentum_sweeps},
+      momentum_settings_{
+          config.dt,
+          config.convection == "upwind" ? ConvectionScheme::upwind : ConvectionScheme::central,
+          config.velocity_relaxation, config.momentum_sweeps, config.momentum_cycles},
       state_(grid_), previous_level_(grid_),
       length_scale_(*std::min_element(config.size.begin(), config.size.end())),
       kernel_(kernel_from_name(config.kernel))
@@ -480,6 +480,9 @@ StepReport Simulation<Dim>::advance_unguarded()
     for (int a = 0; a < Dim; ++a) {
         previous_level_[a] = state_.u_n[a];
         state_.u_n[a] = state_.u[a]; // keep u^n
+    }
+    for (MomentumSystem<Dim>& system : systems_) {
+        system.is_coarse_stale = true; // the momentum multigrid's levels: once per step
     }
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         couplings_[b].velocity_n = bodies_[b].velocity; // keep U^n, ω^n; λ* = λ^n already

@@ -55,6 +55,7 @@ TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
     EXPECT_FALSE(c.steady_tolerance.has_value());
     EXPECT_DOUBLE_EQ(c.tolerance, 1e-5);
     EXPECT_EQ(c.momentum_sweeps, 4);
+    EXPECT_EQ(c.momentum_cycles, 1);
     EXPECT_EQ(c.convection, "central");
     ASSERT_EQ(c.lines.size(), 1U);
     EXPECT_EQ(c.lines[0].n_points, 101);
@@ -245,6 +246,13 @@ std::vector<BadCase> bad_cases()
          f,
          19,
          "simple.velocity_relaxation",
+         "out of range"},
+        {"too_many_momentum_cycles",
+         v + "[simple]\nmomentum_cycles = 21\n",
+         {},
+         f,
+         19,
+         "simple.momentum_cycles",
          "out of range"},
         {"no_way_to_stop",
          replace(v, "end = 1.0\n", ""),

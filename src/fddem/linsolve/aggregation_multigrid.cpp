@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/linsolve/aggregation_multigrid.hpp"
+
+#include <cmath>
+#include <optional>
+
+namespace fddem {
+
+namespace {
+
+/// The neighbour of `i` across its low (side 0) or high (side 1) face along `axis`, wrapped on
+/// a periodic axis; none if it lies outside a bounded one.
+template <int Dim>
+std::optional<Index<Dim>> neighbour(Index<Dim> i, int axis, int side, const Index<Dim>& n,
+                                    const std::array<bool, Dim>& periodic) noexcept
+{
+    const auto sa = static_cast<std::size_t>(axis);
+    i[sa] += side == 0 ? -1 : 1;
+    if (i[sa] < 0 || i[sa] >= n[sa]) {
+        if (!periodic[sa]) {
+            return std::nullopt;
+        }
+        i[sa] = (i[sa] + n[sa]) % n[sa];
+    }
+    return i;
+}
+
+/// Every index of the box [0, n), x fastest (serial: for the small coarse levels).
+template <int Dim, class F>
+void for_each_dense(const Index<Dim>& n, F&& f)
+{
+    Box<Dim> box;
+    box.hi = n;
+    for_each_cell_in_vtk_order<Dim>(box, std::forward<F>(f));
+}
+
+/// (A v) at unknown `i` (flat offset `o`) of a coarse level; links out of a bounded side
+/// (known values) are dropped, links out of a periodic one wrap around.
+template <int Dim>
+double product_at(const CoarseLevel<Dim>& level, const std::vector<double>& v, const Index<Dim>& i,
+                  std::size_t o) noexcept
+{
+    double product = level.diagonal[o] * v[o];
+    std::size_t stride = 1;
+    for (std::size_t d = 0; d < i.size(); ++d) {
+        const auto last = static_cast<std::size_t>(level.n[d] - 1);
+        const auto at = static_cast<std::size_t>(i[d]);
+        const double low = level.a_nb[2 * d][o];
+        const double high = level.a_nb[2 * d + 1][o];
+        if (at > 0) {
+            product -= low * v[o - stride];
+        } else if (level.periodic[d]) {
+            product -= low * v[o + last * stride];
+        }
+        if (at < last) {
+            product -= high * v[o + stride];
+        } else if (level.periodic[d]) {
+            product -= high * v[o - last * stride];
+        }
+        stride *= static_cast<std::size_t>(level.n[d]);
+    }
+    return product;
+}
+
+/// The residual rhs − A x of a coarse level at `i` (flat offset `o`).
+template <int Dim>
+double residual_at(const CoarseLevel<Dim>& level, const Index<Dim>& i, std::size_t o) noexcept
+{
+    return level.rhs[o] - product_at<Dim>(level, level.x, i, o);
+}
+
+/// A red-black Gauss–Seidel sweep, red first or black first (returns the largest change).
+/// Each colour's rows run in parallel; unknowns away from the box's faces take a branch-free
+/// path.
+template <int Dim>
+double gauss_seidel(CoarseLevel<Dim>& level, bool is_red_first)
+{
+    const auto n0 = static_cast<std::size_t>(level.n[0]);
+    std::array<std::size_t, Dim> stride{};
+    stride[0] = 1;
+    for (std::size_t d = 1; d < stride.size(); ++d) {
+        stride[d] = stride[d - 1] * static_cast<std::size_t>(level.n[d - 1]);
+    }
+    double* x = level.x.data();
+    const double* rhs = level.rhs.data();
+    const double* diagonal = level.diagonal.data();
+    Box<Dim> all;
+    all.hi = level.n;
+    Box<Dim> rows = all;
+    rows.hi[0] = 1;
+    // An odd periodic extent across rows puts same-coloured rows next to each other through
+    // the wrap: those levels run their rows serially.
+    bool is_race_free = true;
+    for (std::size_t d = 1; d < stride.size(); ++d) {
+        is_race_free = is_race_free && !(level.periodic[d] && level.n[d] % 2 == 1);
+    }
+    double change = 0.0;
+    for (int pass = 0; pass < 2; ++pass) {
+        const int colour = is_red_first ? pass : 1 - pass;
+        const auto relax_row = [&](const Index<Dim>& row) {
+            Index<Dim> i = row;
+            bool is_inner_row = true;
+            int parity = 0;
+            for (std::size_t d = 1; d < i.size(); ++d) {
+                is_inner_row = is_inner_row && i[d] > 0 && i[d] + 1 < level.n[d];
+                parity += i[d];
+            }
+            const std::size_t row_start = level.offset(row);
+            double row_change = 0.0;
+            for (auto x0 = static_cast<std::size_t>((parity + colour) % 2); x0 < n0; x0 += 2) {
+                const std::size_t o = row_start + x0;
+                double update = 0.0;
+                if (is_inner_row && x0 > 0 && x0 + 1 < n0) {
+                    double r_o = rhs[o] - diagonal[o] * x[o];
+                    for (std::size_t d = 0; d < stride.size(); ++d) {
+                        r_o += level.a_nb[2 * d][o] * x[o - stride[d]] +
+                               level.a_nb[2 * d + 1][o] * x[o + stride[d]];
+                    }
+                    update = r_o / diagonal[o];
+                } else {
+                    i[0] = static_cast<int>(x0);
+                    update = residual_at<Dim>(level, i, o) / diagonal[o];
+                }
+                x[o] += update;
+                row_change = std::max(row_change, std::abs(update));
+            }
+            return row_change;
+        };
+        if (is_race_free) {
+            change = std::max(change, max_over_rows(all, relax_row));
+        } else {
+            for_each_cell_in_vtk_order<Dim>(
+                rows, [&](const Index<Dim>& row) { change = std::max(change, relax_row(row)); });
+        }
+    }
+    return change;
+}
+
+/// coarse = R A P of `fine` (blocks of 2^Dim, piecewise-constant P, summing R).
+template <int Dim>
+void aggregate(const StencilView<Dim>& fine, CoarseLevel<Dim>& coarse)
+{
+    coarse.n = coarse_extent<Dim>(fine.n);
+    coarse.periodic = fine.periodic;
+    std::size_t size = 1;
+    for (const int e : coarse.n) {
+        size *= static_cast<std::size_t>(e);
+    }
+    coarse.diagonal.assign(size, 0.0);
+    for (auto& a : coarse.a_nb) {
+        a.assign(size, 0.0);
+    }
+    coarse.rhs.assign(size, 0.0);
+    coarse.x.assign(size, 0.0);
+
+    Box<Dim> blocks;
+    blocks.hi = coarse.n;
+    // One coarse unknown per call: each writes only its own coefficients.
+    for_each_index(
+        blocks,
+        [&](const Index<Dim>& c) {
+            const std::size_t co = coarse.offset(c);
+            for_each_in_block<Dim>(c, fine.n, [&](const Index<Dim>& i) {
+                const std::ptrdiff_t fo = fine.at(i);
+                coarse.diagonal[co] += fine.diagonal[fo] * fine.diagonal_scale;
+                for (int d = 0; d < Dim; ++d) {
+                    for (int side = 0; side < 2; ++side) {
+                        const auto k = static_cast<std::size_t>(2 * d + side);
+                        const double a = fine.a_nb[k][fo];
+                        if (a == 0.0) {
+                            continue;
+                        }
+                        const auto j = neighbour<Dim>(i, d, side, fine.n, fine.periodic);
+                        if (!j) {
+                            continue; // a known value: no error there
+                        }
+                        if (coarse_index<Dim>(*j) == c) {
+                            coarse.diagonal[co] -= a; // a link inside the block
+                        } else {
+                            coarse.a_nb[k][co] += a;
+                        }
+                    }
+                }
+            });
+        },
+        std::size_t{1} << Dim);
+}
+
+} // namespace
+
+template <int Dim>
+StencilView<Dim> CoarseLevel<Dim>::view() const noexcept
+{
+    StencilView<Dim> v;
+    v.n = n;
+    v.periodic = periodic;
+    std::ptrdiff_t stride = 1;
+    for (std::size_t d = 0; d < n.size(); ++d) {
+        v.stride[d] = stride;
+        stride *= n[d];
+    }
+    v.diagonal = diagonal.data();
+    for (std::size_t k = 0; k < a_nb.size(); ++k) {
+        v.a_nb[k] = a_nb[k].data();
+    }
+    return v;
+}
+
+template <int Dim>
+void build_coarse_levels(const StencilView<Dim>& fine, std::vector<CoarseLevel<Dim>>& levels,
+                         std::size_t coarsest_size)
+{
+    std::size_t count = 0;
+    StencilView<Dim> above = fine;
+    while (true) {
+        const Index<Dim> n = coarse_extent<Dim>(above.n);
+        if (n == above.n) {
+            break; // every extent is 1: nothing left to merge
+        }
+        if (levels.size() <= count) {
+            levels.emplace_back();
+        }
+        aggregate(above, levels[count]);
+        above = levels[count].view();
+        ++count;
+        if (levels[count - 1].size() <= coarsest_size) {
+            break;
+        }
+    }
+    levels.resize(count);
+}
+
+template <int Dim>
+void coarse_v_cycle(std::vector<CoarseLevel<Dim>>& levels, std::size_t k, int sweeps)
+{
+    CoarseLevel<Dim>& level = levels[k];
+    if (k + 1 == levels.size()) {
+        // The coarsest level is small and strongly diagonal (the time term adds up under
+        // merging, the links do not): sweep it to convergence.
+        const double scale = [&] {
+            double largest = 0.0;
+            for (std::size_t o = 0; o < level.size(); ++o) {
+                largest = std::max(largest, std::abs(level.rhs[o] / level.diagonal[o]));
+            }
+            return largest;
+        }();
+        for (int sweep = 0; sweep < 50; ++sweep) {
+            if (gauss_seidel(level, sweep % 2 == 0) <= 1e-6 * scale) {
+                break;
+            }
+        }
+        return;
+    }
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+        gauss_seidel(level, true);
+    }
+    CoarseLevel<Dim>& coarse = levels[k + 1];
+    restrict_sum<Dim>(
+        level.n, [&](const Index<Dim>& i) { return residual_at<Dim>(level, i, level.offset(i)); },
+        coarse);
+    coarse_v_cycle(levels, k + 1, sweeps);
+    for_each_dense<Dim>(level.n, [&](const Index<Dim>& i) {
+        level.x[level.offset(i)] += coarse.x[coarse.offset(coarse_index<Dim>(i))];
+    });
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+        gauss_seidel(level, false);
+    }
+}
+
+template struct CoarseLevel<2>;
+template struct CoarseLevel<3>;
+template void build_coarse_levels<2>(const StencilView<2>&, std::vector<CoarseLevel<2>>&,
+                                     std::size_t);
+template void build_coarse_levels<3>(const StencilView<3>&, std::vector<CoarseLevel<3>>&,
+                                     std::size_t);
+template void coarse_v_cycle<2>(std::vector<CoarseLevel<2>>&, std::size_t, int);
+template void coarse_v_cycle<3>(std::vector<CoarseLevel<3>>&, std::size_t, int);
+
+} // namespace fddem
