@@ -275,10 +275,9 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     for (std::size_t k = 0; k < a_nb.size(); ++k) {
         fine.a_nb[k] = a_nb[k];
     }
-    if (system.is_coarse_stale || system.coarse_levels.empty()) {
-        build_coarse_levels(fine, system.coarse_levels);
-        system.is_coarse_stale = false;
-    }
+    // Rebuilt at every solve: a hierarchy kept for the whole time step (the coefficients
+    // change between outer iterations) made the eighteen-disk case blow up at a collision.
+    build_coarse_levels(fine, system.coarse_levels);
     const int pre_sweeps = settings.sweeps / 2;
     const int post_sweeps = settings.sweeps - pre_sweeps;
     const double* a_p = system.a_p.data();

@@ -35,11 +35,7 @@ struct MomentumSystem {
     // so that a sweep reads 2·Dim + 1 arrays besides u instead of 2·Dim + 5.
     GridArray<Dim> scaled_source;
     std::array<GridArray<Dim>, 2 * Dim> scaled_nb;
-    /// The multigrid's coarse levels, built from the coefficients of the solve that found
-    /// is_coarse_stale set. Their only role is to speed up the sweeps' convergence, so the
-    /// caller may keep them for several outer iterations (fddem keeps them for a time step).
-    std::vector<CoarseLevel<Dim>> coarse_levels;
-    bool is_coarse_stale = true;
+    std::vector<CoarseLevel<Dim>> coarse_levels; ///< the multigrid's, rebuilt every solve
 };
 
 struct MomentumSettings {

@@ -2,28 +2,10 @@
 #include "fddem/linsolve/aggregation_multigrid.hpp"
 
 #include <cmath>
-#include <optional>
 
 namespace fddem {
 
 namespace {
-
-/// The neighbour of `i` across its low (side 0) or high (side 1) face along `axis`, wrapped on
-/// a periodic axis; none if it lies outside a bounded one.
-template <int Dim>
-std::optional<Index<Dim>> neighbour(Index<Dim> i, int axis, int side, const Index<Dim>& n,
-                                    const std::array<bool, Dim>& periodic) noexcept
-{
-    const auto sa = static_cast<std::size_t>(axis);
-    i[sa] += side == 0 ? -1 : 1;
-    if (i[sa] < 0 || i[sa] >= n[sa]) {
-        if (!periodic[sa]) {
-            return std::nullopt;
-        }
-        i[sa] = (i[sa] + n[sa]) % n[sa];
-    }
-    return i;
-}
 
 /// Every index of the box [0, n), x fastest (serial: for the small coarse levels).
 template <int Dim, class F>
@@ -136,6 +118,33 @@ double gauss_seidel(CoarseLevel<Dim>& level, bool is_red_first)
     return change;
 }
 
+/// The first fine unknown of the block of coarse unknown `c`.
+template <int Dim>
+Index<Dim> coarse_index_origin(Index<Dim> c) noexcept
+{
+    for (int& x : c) {
+        x *= 2;
+    }
+    return c;
+}
+
+enum class Link { inside_block, to_next_block, to_known_value };
+
+/// Where the link of fine unknown `at` (along an axis of fine extent `n`, coarse extent
+/// `n_coarse`) across its low (side 0) or high (side 1) face leads under 2-blocking.
+constexpr Link classify_link(int at, int side, int n, int n_coarse, bool is_periodic) noexcept
+{
+    const int there = at + (side == 0 ? -1 : 1);
+    if (there < 0 || there >= n) {
+        if (!is_periodic) {
+            return Link::to_known_value;
+        }
+        // Wrapped: into the block at the other end, which is this one if there is only one.
+        return n_coarse == 1 ? Link::inside_block : Link::to_next_block;
+    }
+    return there / 2 == at / 2 ? Link::inside_block : Link::to_next_block;
+}
+
 /// coarse = R A P of `fine` (blocks of 2^Dim, piecewise-constant P, summing R).
 template <int Dim>
 void aggregate(const StencilView<Dim>& fine, CoarseLevel<Dim>& coarse)
@@ -160,24 +169,52 @@ void aggregate(const StencilView<Dim>& fine, CoarseLevel<Dim>& coarse)
         blocks,
         [&](const Index<Dim>& c) {
             const std::size_t co = coarse.offset(c);
+            bool is_interior = true;
+            for (std::size_t d = 0; d < c.size(); ++d) {
+                is_interior = is_interior && c[d] > 0 && 2 * c[d] + 2 < fine.n[d];
+            }
+            if (is_interior) {
+                // Every member and every neighbour exists: a link along d is inside the block
+                // exactly when it points from the member's side of the block inwards.
+                const std::ptrdiff_t base = fine.at(coarse_index_origin<Dim>(c));
+                double diagonal = 0.0;
+                std::array<double, 2 * Dim> links{};
+                for (int member = 0; member < (1 << Dim); ++member) {
+                    std::ptrdiff_t fo = base;
+                    for (std::size_t d = 0; d < c.size(); ++d) {
+                        fo += ((member >> d) & 1) * fine.stride[d];
+                    }
+                    diagonal += fine.diagonal[fo] * fine.diagonal_scale;
+                    for (std::size_t d = 0; d < c.size(); ++d) {
+                        const bool is_high_member = ((member >> d) & 1) != 0;
+                        const double low = fine.a_nb[2 * d][fo];
+                        const double high = fine.a_nb[2 * d + 1][fo];
+                        diagonal -= is_high_member ? low : high;
+                        links[2 * d + (is_high_member ? 1 : 0)] += is_high_member ? high : low;
+                    }
+                }
+                coarse.diagonal[co] = diagonal;
+                for (std::size_t k = 0; k < links.size(); ++k) {
+                    coarse.a_nb[k][co] = links[k];
+                }
+                return;
+            }
             for_each_in_block<Dim>(c, fine.n, [&](const Index<Dim>& i) {
                 const std::ptrdiff_t fo = fine.at(i);
                 coarse.diagonal[co] += fine.diagonal[fo] * fine.diagonal_scale;
-                for (int d = 0; d < Dim; ++d) {
+                for (std::size_t d = 0; d < i.size(); ++d) {
                     for (int side = 0; side < 2; ++side) {
-                        const auto k = static_cast<std::size_t>(2 * d + side);
-                        const double a = fine.a_nb[k][fo];
-                        if (a == 0.0) {
-                            continue;
-                        }
-                        const auto j = neighbour<Dim>(i, d, side, fine.n, fine.periodic);
-                        if (!j) {
-                            continue; // a known value: no error there
-                        }
-                        if (coarse_index<Dim>(*j) == c) {
-                            coarse.diagonal[co] -= a; // a link inside the block
-                        } else {
-                            coarse.a_nb[k][co] += a;
+                        const double a = fine.a_nb[2 * d + static_cast<std::size_t>(side)][fo];
+                        switch (
+                            classify_link(i[d], side, fine.n[d], coarse.n[d], fine.periodic[d])) {
+                        case Link::inside_block:
+                            coarse.diagonal[co] -= a;
+                            break;
+                        case Link::to_next_block:
+                            coarse.a_nb[2 * d + static_cast<std::size_t>(side)][co] += a;
+                            break;
+                        case Link::to_known_value:
+                            break; // no error there
                         }
                     }
                 }

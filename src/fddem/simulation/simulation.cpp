@@ -481,9 +481,6 @@ StepReport Simulation<Dim>::advance_unguarded()
         previous_level_[a] = state_.u_n[a];
         state_.u_n[a] = state_.u[a]; // keep u^n
     }
-    for (MomentumSystem<Dim>& system : systems_) {
-        system.is_coarse_stale = true; // the momentum multigrid's levels: once per step
-    }
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         couplings_[b].velocity_n = bodies_[b].velocity; // keep U^n, ω^n; λ* = λ^n already
         couplings_[b].omega_n = bodies_[b].omega;
