@@ -78,12 +78,14 @@ TEST(PaperFigs9To13, EighteenDisksSettleIntoAPileWithSmallOverlaps)
     }
     std::printf("max overlap %.2e r, rest from t = %.3f, top of the pile %.3f\n",
                 run.max_relative_overlap, run.rest_from, top);
-    // The pile is chaotic: runs that differ only in round-off (FFT plans, contact-point
-    // arithmetic) gave max overlaps of 0.56, 1.5 and 2.1 % of the radius and came to rest at
-    // t = 2.4-3.2; the bounds hold for all of them with a margin.
-    EXPECT_LT(run.max_relative_overlap, 0.03);
+    // With the case's contact margin of h: max overlap 0.29 % of the radius, at rest from
+    // t = 1.91 (2026-11-23). The pile is chaotic (runs that differ only in round-off settle
+    // differently), so the bounds are the overlap requirement (1 % of the radius) and
+    // twice the time to rest; without the margin the overlaps reached 0.56-2.95 % and the pile
+    // came to rest at t = 2.4-3.9.
+    EXPECT_LT(run.max_relative_overlap, 0.01);
     EXPECT_GT(run.rest_from, 0.0);
-    EXPECT_LT(run.rest_from, 3.9);
+    EXPECT_LT(run.rest_from, 3.8);
     // 18 disks of diameter 0.25 in a box 2 wide: at least three layers, at most a loose six.
     EXPECT_GT(top, 0.5);
     EXPECT_LT(top, 1.5);
