@@ -438,6 +438,11 @@ void Run<Dim>::write_summary(const std::string& status)
     summary.set("last_rate_of_change", last.rate_of_change);
     summary.set("cells", static_cast<long>(sim_.grid().n_cells()));
     summary.set("pressure_solver", sim_.pressure_solver().name());
+    const MomentumSettings& momentum = sim_.momentum_settings();
+    summary.set("momentum_solver", momentum.cycles > 0
+                                       ? fmt::format("multigrid ({} V-cycle(s) of {} sweeps)",
+                                                     momentum.cycles, momentum.sweeps)
+                                       : fmt::format("Gauss-Seidel ({} sweeps)", momentum.sweeps));
     summary.set("wall_seconds_stepping", stepping);
     summary.set("restarts", record_.restarts);
     summary.set("peak_memory_mib", peak_memory_mib());

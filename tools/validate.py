@@ -133,7 +133,7 @@ def schafer_turek_check(name, cells, quick):
     def evaluate(run_dir):
         w = cylinder_wake.wake_numbers(run_dir, 0.2, 0.1, 0.25)
         return [("C_D", w["C_D"], 5.58, 0.035 * 5.58, source),
-                ("C_L", w["C_L"], 0.0107, 0.001, source),
+                ("C_L", w["C_L"], 0.0107, 0.0019, source),
                 ("L_a [m]", w["L_a"] if w["L_a"] is not None else float("nan"), 0.0847, 0.06 * 0.0847,
                  source),
                 ("Δp [Pa]", w["dp"], 0.1174, 0.03 * 0.1174, source)]

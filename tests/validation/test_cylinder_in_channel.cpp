@@ -50,11 +50,13 @@ TEST(CylinderInChannel, SchaferTurekNumbersApproachTheBenchmarkWithRefinement)
     const test::CylinderWake coarse = run_case("cylinder_re20", "[440,82]", 0.2, 0.1);
     const test::CylinderWake fine = run_case("cylinder_re20", "[880,164]", 0.2, 0.1);
     // Measured at D/40: C_D 5.441 (−2.5 %), L_a 0.0810 (−4.4 %), Δp 0.1154 (−1.7 %),
-    // C_L 0.0105. The bounds leave about a third of the error for round-off-level changes.
+    // C_L 0.0095 (−11 %; the 0.0105 of Gauss–Seidel alone at tolerance 1e-4 was not converged:
+    // both momentum solvers give 0.0095 at tolerance 1e-6). The bounds leave about a third of
+    // the error for round-off-level changes.
     EXPECT_NEAR(fine.drag_coefficient / drag, 1.0, 0.035);
     EXPECT_NEAR(*fine.recirculation_length / length, 1.0, 0.06);
     EXPECT_NEAR(fine.pressure_difference / pressure, 1.0, 0.03);
-    EXPECT_GT(fine.lift_coefficient, 0.0095);
+    EXPECT_GT(fine.lift_coefficient, 0.0088);
     EXPECT_LT(fine.lift_coefficient, 0.0115);
     // First order in h (the diffuse interface): the errors of C_D and L_a fall by about half
     // from D/20 to D/40 (measured 0.54 and 0.43).

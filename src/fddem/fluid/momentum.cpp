@@ -343,6 +343,32 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     fill_velocity_ghosts(grid, bc, state.u);
 }
 
+template <int Dim>
+double time_term_share(const MacGrid<Dim>& grid, const FluidProperties& fluid, double dt)
+{
+    const double volume = grid.cell_volume();
+    const double time = fluid.density * volume / dt;
+    double links = 0.0;
+    for (int d = 0; d < Dim; ++d) {
+        const double h = grid.spacing(d);
+        links += 2.0 * fluid.viscosity * (volume / h) / h;
+    }
+    return time / (time + links);
+}
+
+int momentum_cycles_for(const std::string& solver, int cycles, double time_share)
+{
+    if (solver == "gauss_seidel") {
+        return 0;
+    }
+    if (solver == "multigrid") {
+        return cycles;
+    }
+    return time_share < multigrid_time_share ? cycles : 0;
+}
+
+template double time_term_share<2>(const MacGrid<2>&, const FluidProperties&, double);
+template double time_term_share<3>(const MacGrid<3>&, const FluidProperties&, double);
 template double assemble_momentum<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
                                      const FluidProperties&, const MomentumSettings&,
                                      const FluidState<2>&, int, MomentumSystem<2>&);

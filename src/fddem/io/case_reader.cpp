@@ -586,6 +586,7 @@ private:
         c.pressure_relaxation = real("simple", "pressure_relaxation");
         c.momentum_sweeps = static_cast<int>(integer("simple", "momentum_sweeps"));
         c.momentum_cycles = static_cast<int>(integer("simple", "momentum_cycles"));
+        c.momentum_solver = text("simple", "momentum_solver");
         c.convection = text("simple", "convection");
         c.pressure_solver = text("simple", "pressure_solver");
         c.fft_planning = text("simple", "fft_planning");

@@ -161,8 +161,13 @@ std::vector<KeySpec> case_schema()
                        1, 100, false, false));
     s.push_back(ranged(key("simple", "momentum_cycles", T::integer, none, "1",
                            "Multigrid V-cycles (additive correction) of the momentum equations "
-                           "per outer iteration; 0: Gauss–Seidel sweeps alone."),
+                           "per outer iteration, when the multigrid is used; 0: sweeps alone."),
                        0, 20, false, false));
+    s.push_back(choice(key("simple", "momentum_solver", T::string, none, "\"auto\"",
+                           "Momentum solve: multigrid (V-cycles smoothed by Gauss–Seidel), "
+                           "gauss_seidel (sweeps alone) or auto (multigrid where viscosity "
+                           "dominates the time term, ρΔV/Δt < 20 % of a_P; docs/method.md §1)."),
+                       {"auto", "multigrid", "gauss_seidel"}));
     s.push_back(choice(key("simple", "convection", T::string, none, "\"central\"",
                            "Convection: central (second order, by deferred correction) or "
                            "upwind (first order)."),

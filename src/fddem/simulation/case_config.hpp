@@ -73,6 +73,7 @@ struct CaseConfig {
     double pressure_relaxation = 1.0;
     int momentum_sweeps = 4; ///< Gauss–Seidel sweeps per V-cycle (or in all, without cycles)
     int momentum_cycles = 1; ///< multigrid V-cycles per outer iteration (0: sweeps alone)
+    std::string momentum_solver = "auto";  ///< "auto", "multigrid" or "gauss_seidel"
     std::string convection = "central";    ///< "central" (deferred correction) or "upwind"
     std::string pressure_solver = "auto";  ///< "auto", "fft" or "hypre"
     std::string fft_planning = "estimate"; ///< "estimate" or "measure"

@@ -88,10 +88,12 @@ template <int Dim>
 Simulation<Dim>::Simulation(const CaseConfig& config)
     : config_(config), grid_(make_grid<Dim>(config)),
       bc_(make_boundary_conditions<Dim>(config)), properties_{config.density, config.viscosity},
-      momentum_settings_{
-          config.dt,
-          config.convection == "upwind" ? ConvectionScheme::upwind : ConvectionScheme::central,
-          config.velocity_relaxation, config.momentum_sweeps, config.momentum_cycles},
+      momentum_settings_{config.dt,
+                         config.convection == "upwind" ? ConvectionScheme::upwind
+                                                       : ConvectionScheme::central,
+                         config.velocity_relaxation, config.momentum_sweeps,
+                         momentum_cycles_for(config.momentum_solver, config.momentum_cycles,
+                                             time_term_share(grid_, properties_, config.dt))},
       state_(grid_), previous_level_(grid_),
       length_scale_(*std::min_element(config.size.begin(), config.size.end())),
       kernel_(kernel_from_name(config.kernel))

@@ -92,6 +92,10 @@ public:
         return contact_history_;
     }
     [[nodiscard]] const PoissonSolver<Dim>& pressure_solver() const noexcept { return *poisson_; }
+    [[nodiscard]] const MomentumSettings& momentum_settings() const noexcept
+    {
+        return momentum_settings_;
+    }
     /// Seconds spent so far in the momentum and pressure stages.
     [[nodiscard]] double momentum_seconds() const noexcept { return momentum_seconds_; }
     [[nodiscard]] double pressure_seconds() const noexcept { return pressure_seconds_; }
