@@ -44,7 +44,7 @@ struct CavityFixture {
     FluidState<2> state;
     MomentumSystem<2> system;
     FluidProperties fluid{1.0, 0.01};
-    MomentumSettings settings{0.5 / 256, ConvectionScheme::central, 1.0, 1};
+    MomentumSettings settings{0.5 / 256, ConvectionScheme::central, 1.0, 1, 0}; // one sweep
 };
 
 void per_cell(benchmark::State& state, int n)
@@ -75,6 +75,21 @@ void momentum_sweep(benchmark::State& state)
     for (auto _ : state) {
         solve_momentum(f.grid, f.bc, f.settings, f.system, 0, f.state);
         solve_momentum(f.grid, f.bc, f.settings, f.system, 0, f.state);
+    }
+    per_cell(state, n);
+}
+
+/// One multigrid V-cycle (2 + 2 sweeps and the coarse levels, rebuilt as in every solve).
+void momentum_vcycle(benchmark::State& state)
+{
+    const int n = static_cast<int>(state.range(0));
+    CavityFixture f(n);
+    MomentumSettings cycle = f.settings;
+    cycle.sweeps = 4;
+    cycle.cycles = 1;
+    (void)assemble_momentum(f.grid, f.bc, f.fluid, cycle, f.state, 0, f.system);
+    for (auto _ : state) {
+        solve_momentum(f.grid, f.bc, cycle, f.system, 0, f.state);
     }
     per_cell(state, n);
 }
@@ -154,6 +169,7 @@ BENCHMARK_CAPTURE(contact_pairs, brute_force, true)
 
 BENCHMARK(momentum_assembly)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond);
 BENCHMARK(momentum_sweep)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond);
+BENCHMARK(momentum_vcycle)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(poisson, fft, "fft")
     ->RangeMultiplier(2)
     ->Range(64, 512)
