@@ -125,6 +125,17 @@ def towed_check(name, refinement, tolerance, quick):
                  evaluate, plot)
 
 
+def plot_wake_axis(run_dir, axes, x_rear, label, band, band_label, xlabel, ylabel):
+    """u along the wake axis behind a cylinder (samples/wake_axis.csv), x from its rear, with
+    the reference recirculation lengths shaded."""
+    axis = fddem_io.read_csv_columns(os.path.join(run_dir, "samples", "wake_axis.csv"))
+    axes.plot(axis["x"] - x_rear, axis["u"], label=label)
+    axes.axvspan(band[0], band[1], color="k", alpha=0.3, label=band_label)
+    axes.axhline(0.0, color="k", lw=0.5)
+    axes.set_xlabel(xlabel)
+    axes.set_ylabel(ylabel)
+
+
 def schafer_turek_check(name, cells, quick):
     """Schäfer & Turek (1996) 2D-1, Re = 20; tolerances as tests/validation/test_cylinder_in_channel.cpp."""
     source = ("Schäfer & Turek (1996) Table 4 (reference/SOURCE.md); tolerance: the diffuse interface, "
@@ -139,12 +150,8 @@ def schafer_turek_check(name, cells, quick):
                 ("Δp [Pa]", w["dp"], 0.1174, 0.03 * 0.1174, source)]
 
     def plot(run_dir, axes):
-        axis = fddem_io.read_csv_columns(os.path.join(run_dir, "samples", "wake_axis.csv"))
-        axes.plot(axis["x"] - 0.25, axis["u"], label="fddem u on y = 0.2")
-        axes.axvspan(0.0842, 0.0852, color="k", alpha=0.3, label="L_a, Schäfer & Turek (1996)")
-        axes.axhline(0.0, color="k", lw=0.5)
-        axes.set_xlabel("x − x_rear [m]")
-        axes.set_ylabel("u [m/s]")
+        plot_wake_axis(run_dir, axes, 0.25, "fddem u on y = 0.2", (0.0842, 0.0852),
+                       "L_a, Schäfer & Turek (1996)", "x − x_rear [m]", "u [m/s]")
 
     return Check(name, "cases/verification/cylinder_re20/case.toml", [f"domain.cells={cells}"], quick,
                  evaluate, plot)
@@ -169,12 +176,8 @@ def re40_check(name, cells, quick):
                  RE40_LENGTH_TOLERANCE, source)]
 
     def plot(run_dir, axes):
-        axis = fddem_io.read_csv_columns(os.path.join(run_dir, "samples", "wake_axis.csv"))
-        axes.plot(axis["x"] - 8.5, axis["u"], label="fddem u on the axis")
-        axes.axvspan(2.24, 2.345, color="k", alpha=0.3, label="L/D, Fornberg – Dennis & Chang")
-        axes.axhline(0.0, color="k", lw=0.5)
-        axes.set_xlabel("(x − x_rear)/D")
-        axes.set_ylabel("u/U∞")
+        plot_wake_axis(run_dir, axes, 8.5, "fddem u on the axis", (2.24, 2.345),
+                       "L/D, Fornberg – Dennis & Chang", "(x − x_rear)/D", "u/U∞")
 
     return Check(name, "cases/verification/cylinder_re40/case.toml", [f"domain.cells={cells}"], quick,
                  evaluate, plot)

@@ -4,12 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <vector>
 
 #include "support/files_and_programs.hpp"
 
@@ -82,6 +85,46 @@ TEST_F(Cli, SmallRunWritesEveryDocumentedOutput)
     std::ifstream samples(out / "samples/vertical_centerline.csv");
     std::getline(samples, header);
     EXPECT_EQ(header, "x,y,u,v,p");
+}
+
+/// The numbers of a CSV file's rows after its header, row by row.
+std::vector<std::vector<double>> csv_numbers(const fs::path& csv)
+{
+    std::vector<std::vector<double>> rows;
+    const std::vector<std::string> lines = fddem::test::lines_of(fddem::test::file_contents(csv));
+    for (std::size_t k = 1; k < lines.size(); ++k) {
+        std::vector<double>& row = rows.emplace_back();
+        std::istringstream in(lines[k]);
+        for (std::string field; std::getline(in, field, ',');) {
+            row.push_back(std::stod(field));
+        }
+    }
+    return rows;
+}
+
+// MPI starts only when a hypre solver is built (fddem/linsolve/mpi_runtime.hpp): a hypre run
+// must still work from the plain program, on one process, and agree with the FFTW run.
+TEST_F(Cli, HyprePressureSolverStartsMpiOnDemandAndAgreesWithFftw)
+{
+    const fs::path fft = root_ / "fft";
+    const fs::path hypre = root_ / "hypre";
+    ASSERT_EQ(run("run " + case_file_.string() + " -q -o " + fft.string()).status, 0);
+    const Result r = run("run " + case_file_.string() +
+                         " -q --set simple.pressure_solver=hypre -o " + hypre.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::string summary = fddem::test::file_contents(hypre / "summary.json");
+    EXPECT_NE(summary.find("\"pressure_solver\" : \"hypre"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("\"build_mpi_processes\" : \"1\""), std::string::npos) << summary;
+    const auto a = csv_numbers(fft / "samples/vertical_centerline.csv");
+    const auto b = csv_numbers(hypre / "samples/vertical_centerline.csv");
+    ASSERT_EQ(a.size(), 17U);
+    ASSERT_EQ(b.size(), a.size());
+    double largest = 0.0;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        largest = std::max(largest, std::abs(a[k][2] - b[k][2])); // u
+    }
+    // Both solve the same pressure equation, hypre to a relative residual of 1e-10.
+    EXPECT_LT(largest, 1e-7);
 }
 
 TEST_F(Cli, ExistingRunDirectoryIsKeptWithoutForce)

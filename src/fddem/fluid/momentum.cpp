@@ -178,6 +178,181 @@ double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>
     return assemble_component<Dim, 1>(grid, bc, fluid, settings, state, system);
 }
 
+namespace {
+
+/// The system of one component divided by a_P/α (MomentumSystem's scratch arrays): what a
+/// sweep and the multigrid's residual read.
+template <int Dim>
+struct ScaledSystem {
+    const double* source = nullptr;            ///< α (b − pressure term + relaxation) / a_P
+    std::array<const double*, 2 * Dim> c_nb{}; ///< α a_nb / a_P
+    std::array<std::ptrdiff_t, Dim> strides{};
+
+    /// The Gauss–Seidel value at `o`: s + Σ c_nb u_nb.
+    [[nodiscard]] double relaxed(const double* u, std::ptrdiff_t o) const noexcept
+    {
+        double value = source[o];
+        for (std::size_t d = 0; d < strides.size(); ++d) {
+            value += c_nb[2 * d][o] * u[o - strides[d]] + c_nb[2 * d + 1][o] * u[o + strides[d]];
+        }
+        return value;
+    }
+    /// The residual at `o` divided by a_P/α: s − u + Σ c_nb u_nb.
+    [[nodiscard]] double residual(const double* u, std::ptrdiff_t o) const noexcept
+    {
+        double value = source[o] - u[o];
+        for (std::size_t d = 0; d < strides.size(); ++d) {
+            value += c_nb[2 * d][o] * u[o - strides[d]] + c_nb[2 * d + 1][o] * u[o + strides[d]];
+        }
+        return value;
+    }
+};
+
+/// Folds the pressure gradient, the relaxation term and 1/a_P into the scaled system once:
+/// they stay fixed during the sweeps.
+template <int Dim>
+ScaledSystem<Dim> scale_system(const MacGrid<Dim>& grid, const Box<Dim>& box, int axis,
+                               double alpha, const FluidState<Dim>& state,
+                               MomentumSystem<Dim>& system)
+{
+    const double relax_factor = 1.0 / alpha - 1.0;
+    const double pressure_factor = grid.cell_volume() / grid.spacing(axis);
+    const std::ptrdiff_t s_axis = grid.stride(axis);
+    const double* p = state.p.data();
+    const double* a_p = system.a_p.data();
+    const double* b = system.b.data();
+    const double* u_old = system.u_old.data();
+    double* source = system.scaled_source.data();
+    std::array<const double*, 2 * Dim> a_nb{};
+    std::array<double*, 2 * Dim> c_out{};
+    ScaledSystem<Dim> scaled;
+    for (std::size_t k = 0; k < a_nb.size(); ++k) {
+        a_nb[k] = system.a_nb[k].data();
+        c_out[k] = system.scaled_nb[k].data();
+        scaled.c_nb[k] = c_out[k];
+    }
+    for (int d = 0; d < Dim; ++d) {
+        scaled.strides[static_cast<std::size_t>(d)] = grid.stride(d);
+    }
+    scaled.source = source;
+    for_each_row(box, [&](const Index<Dim>& row) {
+        const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
+        for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+            const std::ptrdiff_t o = row_offset + i;
+            const double scale = alpha / a_p[o];
+            source[o] = scale * (b[o] - (p[o] - p[o - s_axis]) * pressure_factor +
+                                 relax_factor * a_p[o] * u_old[o]);
+            for (std::size_t k = 0; k < c_out.size(); ++k) {
+                c_out[k][o] = scale * a_nb[k][o];
+            }
+        }
+    });
+    return scaled;
+}
+
+/// One red-black Gauss–Seidel sweep of `u` over `box`. A face only reads faces of the other
+/// colour, so each colour updates in parallel without races; only periodic images are read
+/// with a non-zero coefficient (wall neighbours are folded into the coefficients), so they are
+/// the only ghosts refilled between the colours.
+template <int Dim>
+void red_black_sweep(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                     const Box<Dim>& box, const ScaledSystem<Dim>& scaled, GridArray<Dim>& u)
+{
+    double* ua = u.data();
+    for (int colour = 0; colour < 2; ++colour) {
+        for_each_row(box, [&](const Index<Dim>& row) {
+            int parity = 0;
+            for (const int x : row) {
+                parity += x;
+            }
+            const int first = box.lo[0] + (((parity - colour) % 2) + 2) % 2;
+            const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
+            for (int i = first; i < box.hi[0]; i += 2) {
+                const std::ptrdiff_t o = row_offset + i;
+                ua[o] = scaled.relaxed(ua, o);
+            }
+        });
+        fill_periodic_ghosts(grid, bc, u);
+    }
+}
+
+/// The finest level of the multigrid: the unscaled system on the grid arrays (a_P/α − a_nb).
+template <int Dim>
+StencilView<Dim> fine_level(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                            const Box<Dim>& box, double alpha, const MomentumSystem<Dim>& system)
+{
+    StencilView<Dim> fine;
+    for (int d = 0; d < Dim; ++d) {
+        const auto sd = static_cast<std::size_t>(d);
+        fine.n[sd] = box.extent(d);
+        fine.periodic[sd] = bc.periodic(d);
+        fine.stride[sd] = grid.stride(d);
+    }
+    fine.origin = grid.offset(box.lo);
+    fine.diagonal = system.a_p.data();
+    fine.diagonal_scale = 1.0 / alpha;
+    for (std::size_t k = 0; k < fine.a_nb.size(); ++k) {
+        fine.a_nb[k] = system.a_nb[k].data();
+    }
+    return fine;
+}
+
+/// coarse.rhs = the fine residual a_P/α · (s − u + Σ c_nb u_nb) summed over each block, and
+/// coarse.x = 0: one coarse row at a time, reading its fine rows with unit stride (cheaper than
+/// restrict_sum's call per unknown).
+template <int Dim>
+void restrict_residual(const StencilView<Dim>& fine, const ScaledSystem<Dim>& scaled,
+                       const double* a_p, double alpha, const double* u, CoarseLevel<Dim>& coarse)
+{
+    Box<Dim> coarse_rows;
+    coarse_rows.hi = coarse.n;
+    coarse_rows.hi[0] = 1;
+    for_each_index(
+        coarse_rows,
+        [&](const Index<Dim>& coarse_row) {
+            const std::size_t out = coarse.offset(coarse_row);
+            const auto width = static_cast<std::size_t>(coarse.n[0]);
+            std::fill_n(coarse.rhs.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
+            std::fill_n(coarse.x.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
+            for (int member = 0; member < (1 << (Dim - 1)); ++member) {
+                Index<Dim> i{};
+                bool is_inside = true;
+                for (int d = 1; d < Dim; ++d) {
+                    const auto sd = static_cast<std::size_t>(d);
+                    i[sd] = 2 * coarse_row[sd] + ((member >> (d - 1)) & 1);
+                    is_inside = is_inside && i[sd] < fine.n[sd];
+                }
+                if (!is_inside) {
+                    continue;
+                }
+                const std::ptrdiff_t row_offset = fine.at(i);
+                for (int x = 0; x < fine.n[0]; ++x) {
+                    const std::ptrdiff_t o = row_offset + x;
+                    coarse.rhs[out + static_cast<std::size_t>(x / 2)] +=
+                        a_p[o] / alpha * scaled.residual(u, o);
+                }
+            }
+        },
+        (std::size_t{1} << Dim) * static_cast<std::size_t>(coarse.n[0]));
+}
+
+/// u += P coarse.x: each fine unknown takes its block's correction.
+template <int Dim>
+void add_coarse_correction(const Box<Dim>& box, const StencilView<Dim>& fine,
+                           const CoarseLevel<Dim>& coarse, double* u)
+{
+    for_each_row(box, [&](const Index<Dim>& row) {
+        Index<Dim> i = row - box.lo;
+        const std::ptrdiff_t row_offset = fine.at(i);
+        for (int x = 0; x < fine.n[0]; ++x) {
+            i[0] = x;
+            u[row_offset + x] += coarse.x[coarse.offset(coarse_index<Dim>(i))];
+        }
+    });
+}
+
+} // namespace
+
 template <int Dim>
 void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                     const MomentumSettings& settings, MomentumSystem<Dim>& system, int axis,
@@ -185,159 +360,36 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
 {
     const Box<Dim> box = unknown_faces(grid, bc, axis);
     const double alpha = settings.relaxation;
-    const double relax_factor = 1.0 / alpha - 1.0;
-    const double pressure_factor = grid.cell_volume() / grid.spacing(axis);
-    const std::ptrdiff_t s_axis = grid.stride(axis);
-    GridArray<Dim>& u_axis = state.u[axis];
-    double* ua = u_axis.data();
-    std::array<std::ptrdiff_t, Dim> strides{};
-    for (int d = 0; d < Dim; ++d) {
-        strides[static_cast<std::size_t>(d)] = grid.stride(d);
-    }
-    std::array<const double*, 2 * Dim> a_nb{};
-    std::array<double*, 2 * Dim> c_out{};
-    std::array<const double*, 2 * Dim> c_nb{};
-    for (std::size_t k = 0; k < a_nb.size(); ++k) {
-        a_nb[k] = system.a_nb[k].data();
-        c_out[k] = system.scaled_nb[k].data();
-        c_nb[k] = c_out[k];
-    }
-
-    // The pressure gradient and the relaxation term stay fixed during the sweeps: fold them
-    // and 1/a_P into the scaled system once.
-    {
-        const double* p = state.p.data();
-        const double* a_p = system.a_p.data();
-        const double* b = system.b.data();
-        const double* u_old = system.u_old.data();
-        double* source = system.scaled_source.data();
-        for_each_row(box, [&](const Index<Dim>& row) {
-            const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
-            for (int i = box.lo[0]; i < box.hi[0]; ++i) {
-                const std::ptrdiff_t o = row_offset + i;
-                const double scale = alpha / a_p[o];
-                source[o] = scale * (b[o] - (p[o] - p[o - s_axis]) * pressure_factor +
-                                     relax_factor * a_p[o] * u_old[o]);
-                for (std::size_t k = 0; k < c_out.size(); ++k) {
-                    c_out[k][o] = scale * a_nb[k][o];
-                }
-            }
-        });
-    }
-    const double* source = system.scaled_source.data();
-
-    const auto sweep = [&] {
-        for (int colour = 0; colour < 2; ++colour) {
-            // Red-black ordering: a face only reads faces of the other colour, so each
-            // colour updates in parallel without races.
-            for_each_row(box, [&](const Index<Dim>& row) {
-                int parity = 0;
-                for (const int x : row) {
-                    parity += x;
-                }
-                const int first = box.lo[0] + (((parity - colour) % 2) + 2) % 2;
-                const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
-                for (int i = first; i < box.hi[0]; i += 2) {
-                    const std::ptrdiff_t o = row_offset + i;
-                    double u_new = source[o];
-                    for (int d = 0; d < Dim; ++d) {
-                        const std::ptrdiff_t s = strides[static_cast<std::size_t>(d)];
-                        u_new += c_nb[static_cast<std::size_t>(2 * d)][o] * ua[o - s] +
-                                 c_nb[static_cast<std::size_t>(2 * d + 1)][o] * ua[o + s];
-                    }
-                    ua[o] = u_new;
-                }
-            });
-            // Only periodic images are read with a non-zero coefficient during the sweeps
-            // (wall neighbours are folded into the coefficients).
-            fill_periodic_ghosts(grid, bc, u_axis);
-        }
-    };
+    GridArray<Dim>& u = state.u[axis];
+    const ScaledSystem<Dim> scaled = scale_system(grid, box, axis, alpha, state, system);
 
     if (settings.cycles == 0) {
         for (int k = 0; k < settings.sweeps; ++k) {
-            sweep();
+            red_black_sweep(grid, bc, box, scaled, u);
         }
         fill_velocity_ghosts(grid, bc, state.u);
         return;
     }
 
-    StencilView<Dim> fine;
-    for (int d = 0; d < Dim; ++d) {
-        const auto sd = static_cast<std::size_t>(d);
-        fine.n[sd] = box.extent(d);
-        fine.periodic[sd] = bc.periodic(d);
-        fine.stride[sd] = strides[sd];
-    }
-    fine.origin = grid.offset(box.lo);
-    fine.diagonal = system.a_p.data();
-    fine.diagonal_scale = 1.0 / alpha;
-    for (std::size_t k = 0; k < a_nb.size(); ++k) {
-        fine.a_nb[k] = a_nb[k];
-    }
+    const StencilView<Dim> fine = fine_level(grid, bc, box, alpha, system);
     // Rebuilt at every solve: a hierarchy kept for the whole time step (the coefficients
     // change between outer iterations) made the eighteen-disk case blow up at a collision.
     build_coarse_levels(fine, system.coarse_levels);
     const int pre_sweeps = settings.sweeps / 2;
     const int post_sweeps = settings.sweeps - pre_sweeps;
-    const double* a_p = system.a_p.data();
     for (int cycle = 0; cycle < settings.cycles; ++cycle) {
         for (int k = 0; k < pre_sweeps; ++k) {
-            sweep();
+            red_black_sweep(grid, bc, box, scaled, u);
         }
         if (!system.coarse_levels.empty()) {
             CoarseLevel<Dim>& coarse = system.coarse_levels.front();
-            // The residual, summed over each block into the coarse right-hand side: one
-            // coarse row at a time, reading its fine rows with unit stride.
-            Box<Dim> coarse_rows;
-            coarse_rows.hi = coarse.n;
-            coarse_rows.hi[0] = 1;
-            for_each_index(
-                coarse_rows,
-                [&](const Index<Dim>& coarse_row) {
-                    const std::size_t out = coarse.offset(coarse_row);
-                    const auto width = static_cast<std::size_t>(coarse.n[0]);
-                    std::fill_n(coarse.rhs.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
-                    std::fill_n(coarse.x.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
-                    for (int member = 0; member < (1 << (Dim - 1)); ++member) {
-                        Index<Dim> i{};
-                        bool is_inside = true;
-                        for (int d = 1; d < Dim; ++d) {
-                            const auto sd = static_cast<std::size_t>(d);
-                            i[sd] = 2 * coarse_row[sd] + ((member >> (d - 1)) & 1);
-                            is_inside = is_inside && i[sd] < fine.n[sd];
-                        }
-                        if (!is_inside) {
-                            continue;
-                        }
-                        const std::ptrdiff_t row_offset = fine.at(i);
-                        for (int x = 0; x < fine.n[0]; ++x) {
-                            const std::ptrdiff_t o = row_offset + x;
-                            double scaled = source[o] - ua[o];
-                            for (int d = 0; d < Dim; ++d) {
-                                const std::ptrdiff_t s = strides[static_cast<std::size_t>(d)];
-                                scaled += c_nb[static_cast<std::size_t>(2 * d)][o] * ua[o - s] +
-                                          c_nb[static_cast<std::size_t>(2 * d + 1)][o] * ua[o + s];
-                            }
-                            coarse.rhs[out + static_cast<std::size_t>(x / 2)] +=
-                                a_p[o] / alpha * scaled;
-                        }
-                    }
-                },
-                (std::size_t{1} << Dim) * static_cast<std::size_t>(coarse.n[0]));
+            restrict_residual(fine, scaled, system.a_p.data(), alpha, u.data(), coarse);
             coarse_v_cycle(system.coarse_levels, 0, 2);
-            for_each_row(box, [&](const Index<Dim>& row) {
-                Index<Dim> i = row - box.lo;
-                const std::ptrdiff_t row_offset = fine.at(i);
-                for (int x = 0; x < fine.n[0]; ++x) {
-                    i[0] = x;
-                    ua[row_offset + x] += coarse.x[coarse.offset(coarse_index<Dim>(i))];
-                }
-            });
-            fill_periodic_ghosts(grid, bc, u_axis);
+            add_coarse_correction(box, fine, coarse, u.data());
+            fill_periodic_ghosts(grid, bc, u);
         }
         for (int k = 0; k < post_sweeps; ++k) {
-            sweep();
+            red_black_sweep(grid, bc, box, scaled, u);
         }
     }
     fill_velocity_ghosts(grid, bc, state.u);

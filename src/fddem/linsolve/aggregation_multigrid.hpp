@@ -14,7 +14,7 @@
 /// change with the iterate) and MPI, whose start-up alone costs more than this whole solve.
 ///
 /// The finest level is the caller's grid arrays (a StencilView); the coarse levels are dense,
-/// x fastest, small, and smoothed serially.
+/// x fastest, and smoothed by red-black Gauss–Seidel (rows in parallel on the larger ones).
 
 #include "fddem/core/index.hpp"
 
@@ -101,6 +101,8 @@ void build_coarse_levels(const StencilView<Dim>& fine, std::vector<CoarseLevel<D
 /// One V-cycle on levels[k], levels[k+1], …: approximately solves levels[k]'s system for
 /// levels[k].x from levels[k].rhs, starting from x = 0; `sweeps` Gauss–Seidel sweeps before
 /// and after each coarse correction, and sweeps until converged (at most 50) on the coarsest.
+/// (solve_momentum does the finest level's part itself, on the grid arrays: a row-wise
+/// restriction there is cheaper than restrict_sum's per-unknown calls.)
 template <int Dim>
 void coarse_v_cycle(std::vector<CoarseLevel<Dim>>& levels, std::size_t k, int sweeps);
 

@@ -56,6 +56,7 @@ TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
     EXPECT_DOUBLE_EQ(c.tolerance, 1e-5);
     EXPECT_EQ(c.momentum_sweeps, 4);
     EXPECT_EQ(c.momentum_cycles, 1);
+    EXPECT_EQ(c.momentum_solver, "auto");
     EXPECT_EQ(c.convection, "central");
     ASSERT_EQ(c.lines.size(), 1U);
     EXPECT_EQ(c.lines[0].n_points, 101);
@@ -254,6 +255,13 @@ std::vector<BadCase> bad_cases()
          19,
          "simple.momentum_cycles",
          "out of range"},
+        {"misspelt_momentum_solver",
+         v + "[simple]\nmomentum_solver = \"multigird\"\n",
+         {},
+         f,
+         19,
+         "simple.momentum_solver",
+         "did you mean 'multigrid'"},
         {"no_way_to_stop",
          replace(v, "end = 1.0\n", ""),
          {},
