@@ -175,10 +175,16 @@ int Run<Dim>::step_to_end()
     }
     // Its checkpoint lets `fddem run --restart DIR --set time.end=…` extend a finished run.
     close_outputs("completed");
+    const auto rest = sim_.at_rest_since();
+    const std::string settled =
+        rest && config_.rest_speed
+            ? fmt::format(" (every body slower than time.rest_speed = {:g} since t = {:g} s)",
+                          *config_.rest_speed, *rest)
+            : std::string();
     std::fprintf(stderr,
-                 "fddem: %s: %ld steps to t = %.6g s, %ld outer iterations, %.2f s; results in "
-                 "%s\n",
-                 config_.source_file.c_str(), sim_.clock().step, sim_.clock().time,
+                 "fddem: %s: %ld steps to t = %.6g s%s, %ld outer iterations, %.2f s; results "
+                 "in %s\n",
+                 config_.source_file.c_str(), sim_.clock().step, sim_.clock().time, settled.c_str(),
                  record_.total_outer_iterations, record_.wall_seconds, directory_.c_str());
     return exit_success;
 }
@@ -464,6 +470,9 @@ void Run<Dim>::write_summary(const std::string& status)
         summary.set("max_overlap", record_.max_overlap);
         summary.set("max_relative_overlap", record_.max_relative_overlap);
         summary.set("max_overlap_time", record_.max_overlap_time);
+        if (const auto since = sim_.at_rest_since()) {
+            summary.set("at_rest_since", *since); // every free body below time.rest_speed
+        }
         if (config_.reynolds) {
             summary.set("characteristic_velocity", config_.characteristic_velocity);
             summary.set("characteristic_time",

@@ -34,7 +34,13 @@ std::string end_reason(const CaseConfig& config, const Clock& clock)
     if (config.end_time && clock.time >= *config.end_time - 0.5 * clock.dt) {
         return fmt::format("time.end = {:g} s", *config.end_time);
     }
-    return "the flow is steady (time.steady_tolerance)";
+    if (!config.rest_speed) {
+        return "the flow is steady (time.steady_tolerance)";
+    }
+    return config.steady_tolerance
+               ? "every body has settled or the flow is steady (time.rest_speed, "
+                 "time.steady_tolerance)"
+               : "every body has settled (time.rest_speed)";
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -44,6 +45,28 @@ TEST(DiskInBox, FallsLandsAndComesToRestOnTheFloor)
     EXPECT_LT(landing.rest_from, 1.1);
     // Released on the centre line of a symmetric box: it lands there.
     EXPECT_NEAR(body.centre[0], 1.0, 0.02);
+}
+
+TEST(DiskInBox, RunStopsOnceTheDiskHasSettled)
+{
+    // time.rest_speed: the run ends rest_duration after every free body became slower than
+    // the given speed (|U| + |ω|R), not at time.end.
+    CaseConfig config = read_case(fig05, {"domain.cells=[64,192]", "time.end=1.5",
+                                          "time.rest_speed=0.01", "time.rest_duration=0.05"});
+    config.bodies.front().n_rings = 3;
+    Simulation<2> sim(config);
+    const test::BodyHistory landing = test::run_and_track(sim, 0.01);
+    ASSERT_TRUE(sim.at_rest_since().has_value());
+    const double since = *sim.at_rest_since();
+    std::printf("first contact t = %.3f, at rest since t = %.3f, stopped at t = %.3f\n",
+                landing.first_contact, since, sim.clock().time);
+    EXPECT_GT(since, landing.first_contact); // not while it was still falling
+    EXPECT_NEAR(sim.clock().time, since + 0.05, 0.5 * config.dt);
+    EXPECT_LT(sim.clock().time, 1.2);
+    // It stopped because the disk rests on the floor, one radius up.
+    const RigidBody<2>& body = sim.bodies().front();
+    EXPECT_LT(body.velocity.norm() + std::abs(body.omega) * body.shape.radius(), 0.01);
+    EXPECT_NEAR(body.centre[1], body.shape.radius(), 0.01 * body.shape.radius());
 }
 
 } // namespace

@@ -25,8 +25,8 @@ double compute_divergence(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
 template <int Dim>
 double correct_pressure_and_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                                      const FluidProperties& fluid, double dt,
-                                     double pressure_relaxation, PoissonSolver<Dim>& poisson,
-                                     FluidState<Dim>& state)
+                                     double pressure_relaxation, PressureUpdate update,
+                                     PoissonSolver<Dim>& poisson, FluidState<Dim>& state)
 {
     // Outflow faces from u* (zero gradient, corrected to the inflow's volume flux): they are
     // not corrected by p′ below, and they make the right-hand side sum to zero, as the
@@ -51,9 +51,12 @@ double correct_pressure_and_velocity(const MacGrid<Dim>& grid, const BoundaryCon
             ua[o] += factor * (state.p_corr[o - s] - state.p_corr[o]);
         });
     }
-    // eq. (10): p = p* + α_p p′.
+    // eq. (10): p = p* + α_p p′, or p* + α_p (p′ − μ ∇·u*) (rotational); `divergence` holds
+    // (ρf/Δt) ∇·u*.
+    const double rotational =
+        update == PressureUpdate::rotational ? fluid.viscosity / source_factor : 0.0;
     for_each_index(grid.owned_cells(), [&](const Index<Dim>& c) {
-        state.p(c) += pressure_relaxation * state.p_corr(c);
+        state.p(c) += pressure_relaxation * (state.p_corr(c) - rotational * state.divergence(c));
     });
     fill_velocity_ghosts(grid, bc, state.u);
     fill_cell_ghosts(grid, bc, state.p);
@@ -64,9 +67,9 @@ template double compute_divergence<2>(const MacGrid<2>&, const FaceField<2>&, Ce
 template double compute_divergence<3>(const MacGrid<3>&, const FaceField<3>&, CellField<3>&);
 template double correct_pressure_and_velocity<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
                                                  const FluidProperties&, double, double,
-                                                 PoissonSolver<2>&, FluidState<2>&);
+                                                 PressureUpdate, PoissonSolver<2>&, FluidState<2>&);
 template double correct_pressure_and_velocity<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
                                                  const FluidProperties&, double, double,
-                                                 PoissonSolver<3>&, FluidState<3>&);
+                                                 PressureUpdate, PoissonSolver<3>&, FluidState<3>&);
 
 } // namespace fddem

@@ -579,11 +579,18 @@ private:
         if (node("time", "steady_tolerance") != nullptr) {
             c.steady_tolerance = real("time", "steady_tolerance");
         }
+        if (node("time", "rest_speed") != nullptr) {
+            c.rest_speed = real("time", "rest_speed");
+        }
+        c.rest_duration = real("time", "rest_duration");
+        c.min_end = real("time", "min_end");
         c.max_steps = integer("time", "max_steps");
         c.tolerance = real("simple", "tolerance");
         c.max_outer_iterations = static_cast<int>(integer("simple", "max_outer_iterations"));
         c.velocity_relaxation = real("simple", "velocity_relaxation");
         c.pressure_relaxation = real("simple", "pressure_relaxation");
+        c.pressure_update = text("simple", "pressure_update");
+        c.acceleration_depth = static_cast<int>(integer("simple", "acceleration_depth"));
         c.momentum_sweeps = static_cast<int>(integer("simple", "momentum_sweeps"));
         c.momentum_cycles = static_cast<int>(integer("simple", "momentum_cycles"));
         c.momentum_solver = text("simple", "momentum_solver");
@@ -1152,10 +1159,20 @@ private:
 
     void check_contradictions(const CaseConfig& c) const
     {
-        if (!c.end_time && !c.steady_tolerance) {
-            where_.fail(
-                "time.end", doc_.get("time"),
-                "give time.end, time.steady_tolerance, or both: the run needs a way to stop");
+        if (!c.end_time && !c.steady_tolerance && !c.rest_speed) {
+            where_.fail("time.end", doc_.get("time"),
+                        "give time.end, time.steady_tolerance or time.rest_speed: the run needs "
+                        "a way to stop");
+        }
+        if (c.rest_speed && std::none_of(c.bodies.begin(), c.bodies.end(),
+                                         [](const auto& b) { return b.motion == "free"; })) {
+            where_.fail("time.rest_speed", node("time", "rest_speed"),
+                        "the case has no free body to come to rest");
+        }
+        if (c.end_time && c.min_end > *c.end_time) {
+            where_.fail("time.min_end", node("time", "min_end"),
+                        fmt::format("the earliest end {:g} s is after the end time {:g} s",
+                                    c.min_end, *c.end_time));
         }
         if (c.end_time && c.dt > *c.end_time) {
             where_.fail("time.dt", node("time", "dt"),

@@ -131,11 +131,20 @@ std::vector<KeySpec> case_schema()
 
     s.push_back(positive(key("time", "dt", T::real, "s", std::nullopt, "Time step Δt.")));
     s.push_back(positive(key("time", "end", T::real, "s", "none",
-                             "End time; at least one of time.end and time.steady_tolerance "
-                             "is required.")));
+                             "End time; at least one of time.end, time.steady_tolerance and "
+                             "time.rest_speed is required.")));
     s.push_back(positive(key("time", "steady_tolerance", T::real, none, "none",
                              "Stop when the flow is steady: max|u^{n+1} − u^n|/Δt · L/U² "
                              "below this (L the smallest box side, U the largest speed).")));
+    s.push_back(positive(key("time", "rest_speed", T::real, "m/s", "none",
+                             "Stop when the particles have settled: every free body's speed "
+                             "|U| + |ω|R below this for time.rest_duration.")));
+    s.push_back(positive(key("time", "rest_duration", T::real, "s", "0.1",
+                             "How long every free body must stay below time.rest_speed.")));
+    s.push_back(ranged(key("time", "min_end", T::real, "s", "0",
+                           "The earliest time at which time.rest_speed or "
+                           "time.steady_tolerance may end the run."),
+                       0.0, inf, false, false));
     s.push_back(ranged(
         key("time", "max_steps", T::integer, none, "100000000", "Stop after this many steps."), 1,
         inf, false, false));
@@ -154,6 +163,17 @@ std::vector<KeySpec> case_schema()
     s.push_back(ranged(key("simple", "pressure_relaxation", T::real, none, "1.0",
                            "Under-relaxation α_p of the pressure correction, eq. (10)."),
                        0.0, 1.0, true, false));
+    s.push_back(choice(key("simple", "pressure_update", T::string, none, "\"rotational\"",
+                           "How eq. (10) updates p from p′: standard (p* + α_p p′, the paper's) "
+                           "or rotational (p* + α_p (p′ − μ∇·u*): the same converged answer in "
+                           "fewer outer iterations where viscosity acts within a cell in Δt; "
+                           "docs/method.md §1)."),
+                       {"standard", "rotational"}));
+    s.push_back(ranged(key("simple", "acceleration_depth", T::integer, none, "2",
+                           "Anderson acceleration of the outer iterations of a step with "
+                           "bodies: how many earlier iterates it combines (0: off; "
+                           "docs/method.md §2)."),
+                       0, 10, false, false));
     s.push_back(ranged(key("simple", "momentum_sweeps", T::integer, none, "4",
                            "Red-black Gauss–Seidel sweeps of the momentum equations per V-cycle "
                            "(half before the coarse correction, half after), or per outer "

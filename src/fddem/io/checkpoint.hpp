@@ -28,7 +28,7 @@
 namespace fddem {
 
 /// The format version written; only this one is read (a new state member bumps it).
-inline constexpr std::uint64_t checkpoint_format_version = 2; // 2: tangential springs
+inline constexpr std::uint64_t checkpoint_format_version = 3; // 2: springs; 3: rest_since
 
 /// (key, value as text) pairs: what a checkpoint's grid and bodies must share with the case it
 /// is restored into.

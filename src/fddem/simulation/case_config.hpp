@@ -64,6 +64,9 @@ struct CaseConfig {
     double dt = 1e-3;                       ///< Δt [s]
     std::optional<double> end_time;         ///< [s]
     std::optional<double> steady_tolerance; ///< stop when max|u^{n+1}−u^n|/(Δt) · L/U² drops below
+    std::optional<double> rest_speed;       ///< stop when every free body is slower than this [m/s]
+    double rest_duration = 0.1;             ///< ... for this long [s]
+    double min_end = 0.0; ///< rest_speed and steady_tolerance end no run before this [s]
     long max_steps = 100000000;
 
     // [simple]
@@ -71,8 +74,10 @@ struct CaseConfig {
     int max_outer_iterations = 50;
     double velocity_relaxation = 1.0;
     double pressure_relaxation = 1.0;
-    int momentum_sweeps = 4; ///< Gauss–Seidel sweeps per V-cycle (or in all, without cycles)
-    int momentum_cycles = 1; ///< multigrid V-cycles per outer iteration (0: sweeps alone)
+    std::string pressure_update = "rotational"; ///< "standard" or "rotational" (eq. (10))
+    int acceleration_depth = 2; ///< Anderson mixing depth of a step's outer iterations (0: off)
+    int momentum_sweeps = 4;    ///< Gauss–Seidel sweeps per V-cycle (or in all, without cycles)
+    int momentum_cycles = 1;    ///< multigrid V-cycles per outer iteration (0: sweeps alone)
     std::string momentum_solver = "auto";  ///< "auto", "multigrid" or "gauss_seidel"
     std::string convection = "central";    ///< "central" (deferred correction) or "upwind"
     std::string pressure_solver = "auto";  ///< "auto", "fft" or "hypre"

@@ -6,7 +6,6 @@
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/rigid_coupling.hpp"
 #include "fddem/coupling/transfer.hpp"
-#include "fddem/fluid/pressure_correction.hpp"
 #include "fddem/grid/loops.hpp"
 
 #include <fmt/format.h>
@@ -82,6 +81,30 @@ double max_speed(const MacGrid<Dim>& grid, const FaceField<Dim>& u)
 
 using Seconds = std::chrono::duration<double>;
 
+/// The outer iteration from which Anderson mixing keeps its history: the first two or three
+/// iterations of a step shrink the change by 0.05–0.6 each and need no help, and a step that
+/// converges in them (most steps of a single body or a dilute suspension) pays nothing for it.
+constexpr int first_mixed_iteration = 3;
+
+/// The values of a list of small vectors (λ on the markers) as one span of doubles; a
+/// Vec<Dim> is Dim contiguous doubles.
+template <int Dim>
+std::span<double> flat(std::vector<Vec<Dim>>& values)
+{
+    static_assert(sizeof(Vec<Dim>) == Dim * sizeof(double));
+    return values.empty() ? std::span<double>()
+                          : std::span<double>(values.front().data(), Dim * values.size());
+}
+
+std::span<double> flat(double& value)
+{
+    return {&value, 1};
+}
+std::span<double> flat(Vec<3>& value)
+{
+    return {value.data(), 3};
+}
+
 } // namespace
 
 template <int Dim>
@@ -96,7 +119,10 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
                                              time_term_share(grid_, properties_, config.dt))},
       state_(grid_), previous_level_(grid_),
       length_scale_(*std::min_element(config.size.begin(), config.size.end())),
-      kernel_(kernel_from_name(config.kernel))
+      kernel_(kernel_from_name(config.kernel)),
+      pressure_update_(config.pressure_update == "standard" ? PressureUpdate::standard
+                                                            : PressureUpdate::rotational),
+      mixing_(config.acceleration_depth)
 {
     for (int a = 0; a < Dim; ++a) {
         systems_.emplace_back(grid_);
@@ -190,6 +216,23 @@ void Simulation<Dim>::advance_time_level_in_systems()
             b[o] += a_time * (now[o] - before[o]);
         });
     }
+}
+
+template <int Dim>
+std::size_t Simulation<Dim>::collect_iterate(std::vector<std::span<double>>& segments)
+{
+    segments.clear();
+    for (int a = 0; a < Dim; ++a) {
+        segments.push_back(state_.u[a].values());
+    }
+    const std::size_t measured = segments.size();
+    segments.push_back(state_.p.values());
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        segments.push_back(flat<Dim>(couplings_[b].lambda));
+        segments.push_back(std::span<double>(bodies_[b].velocity.data(), Dim));
+        segments.push_back(flat(bodies_[b].omega));
+    }
+    return measured;
 }
 
 template <int Dim>
@@ -501,8 +544,14 @@ StepReport Simulation<Dim>::advance_unguarded()
     }
     double mass_residual =
         compute_divergence(grid_, state_.u, state_.divergence) * cell / reference_velocity();
+    mixing_.reset();
+    const bool is_mixed = has_bodies && mixing_.depth() > 0;
     for (int k = 1; k <= config_.max_outer_iterations; ++k) {
         const double velocity_scale = reference_velocity();
+        if (is_mixed && k >= first_mixed_iteration) {
+            const std::size_t measured = collect_iterate(iterate_);
+            mixing_.remember(iterate_, measured); // x_k
+        }
 
         // eqs. (7)–(8): momentum coefficients about the latest iterate, and its residual.
         auto start = std::chrono::steady_clock::now();
@@ -552,8 +601,9 @@ StepReport Simulation<Dim>::advance_unguarded()
 
         // eqs. (9)–(12): pressure correction, then p and u corrected.
         start = std::chrono::steady_clock::now();
-        const double max_divergence = correct_pressure_and_velocity(
-            grid_, bc_, properties_, dt, config_.pressure_relaxation, *poisson_, state_);
+        const double max_divergence =
+            correct_pressure_and_velocity(grid_, bc_, properties_, dt, config_.pressure_relaxation,
+                                          pressure_update_, *poisson_, state_);
         pressure_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
         mass_residual = max_divergence * cell / velocity_scale;
 
@@ -585,6 +635,15 @@ StepReport Simulation<Dim>::advance_unguarded()
                 body_change = std::max(body_change, change / scale);
             }
             report.body_change = body_change;
+            if (is_mixed && k >= first_mixed_iteration) {
+                // G(x_k) → x_{k+1}: Anderson mixing of the whole iterate (docs/method.md §2).
+                const std::size_t measured = collect_iterate(iterate_);
+                mixing_.mix(iterate_, measured);
+                for (BodyCoupling<Dim>& c : couplings_) {
+                    c.lambda_star = c.lambda;
+                }
+                fill_cell_ghosts(grid_, bc_, state_.p);
+            }
             spread_marker_forces(); // the momentum source of the next iteration: ρf D(λ*)
             fill_velocity_ghosts(grid_, bc_, state_.u);
             coupling_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
@@ -617,7 +676,32 @@ StepReport Simulation<Dim>::advance_unguarded()
         change == 0.0 ? 0.0 : (change / velocity_scale) * (length_scale_ / (dt * velocity_scale));
     clock_.time += dt;
     ++clock_.step;
+    track_rest();
     return report;
+}
+
+template <int Dim>
+void Simulation<Dim>::track_rest()
+{
+    if (!config_.rest_speed) {
+        return;
+    }
+    const bool is_at_rest =
+        std::all_of(bodies_.begin(), bodies_.end(), [&](const RigidBody<Dim>& body) {
+            double spin = 0.0;
+            if constexpr (Dim == 2) {
+                spin = std::abs(body.omega);
+            } else {
+                spin = body.omega.norm();
+            }
+            return body.motion != Motion::free ||
+                   body.velocity.norm() + spin * body.shape.radius() < *config_.rest_speed;
+        });
+    if (!is_at_rest) {
+        rest_since_ = -1.0;
+    } else if (rest_since_ < 0.0) {
+        rest_since_ = clock_.time;
+    }
 }
 
 template <int Dim>
@@ -655,6 +739,13 @@ bool Simulation<Dim>::is_finished(const StepReport& last) const
         return true;
     }
     if (config_.end_time && clock_.time >= *config_.end_time - 0.5 * clock_.dt) {
+        return true;
+    }
+    if (clock_.time < config_.min_end - 0.5 * clock_.dt) {
+        return false;
+    }
+    if (config_.rest_speed && rest_since_ >= 0.0 &&
+        clock_.time - rest_since_ >= config_.rest_duration - 0.5 * clock_.dt) {
         return true;
     }
     return config_.steady_tolerance && clock_.step > 1 &&

@@ -10,12 +10,15 @@
 #include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/fluid/fluid_state.hpp"
 #include "fddem/fluid/momentum.hpp"
+#include "fddem/fluid/pressure_correction.hpp"
 #include "fddem/grid/mac_grid.hpp"
+#include "fddem/linsolve/anderson_mixing.hpp"
 #include "fddem/linsolve/poisson_solver.hpp"
 #include "fddem/simulation/case_config.hpp"
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -57,6 +60,11 @@ public:
 
     /// True when the end time or the step limit is reached, or the flow is steady.
     [[nodiscard]] bool is_finished(const StepReport& last) const;
+    /// The time from which every free body has been slower than time.rest_speed, if it is now.
+    [[nodiscard]] std::optional<double> at_rest_since() const
+    {
+        return rest_since_ >= 0.0 ? std::optional<double>(rest_since_) : std::nullopt;
+    }
 
     [[nodiscard]] const MacGrid<Dim>& grid() const noexcept { return grid_; }
     [[nodiscard]] const BoundaryConditions<Dim>& boundary_conditions() const noexcept
@@ -175,6 +183,7 @@ private:
             archive("contact.dem_omega", c.dem_omega);
         }
         archive("contact.tangential_springs", self.contact_history_.springs);
+        archive("rest_since", self.rest_since_);
         archive("seconds.coupling", self.coupling_seconds_);
         archive("seconds.contact", self.contact_seconds_);
         archive("seconds.momentum", self.momentum_seconds_);
@@ -215,6 +224,12 @@ private:
     void move_bodies(double dt);
     void resolve_contacts(double dt, StepReport& report);
     void advance_time_level_in_systems();
+    /// Tracks rest_since_ after a step (time.rest_speed).
+    void track_rest();
+    /// The outer iterate as Anderson mixing sees it (docs/method.md §2): the velocity
+    /// components (measured), then p, λ and the bodies' U, ω (carried along). Returns the
+    /// number of measured segments.
+    std::size_t collect_iterate(std::vector<std::span<double>>& segments);
 
     CaseConfig config_;
     MacGrid<Dim> grid_;
@@ -247,6 +262,10 @@ private:
     double contact_seconds_ = 0.0;
     double momentum_seconds_ = 0.0;
     double pressure_seconds_ = 0.0;
+    double rest_since_ = -1.0; ///< see at_rest_since(); negative: some body is moving
+    PressureUpdate pressure_update_;
+    AndersonMixing mixing_; ///< of the outer iterate, reset every step
+    std::vector<std::span<double>> iterate_;
 };
 
 } // namespace fddem

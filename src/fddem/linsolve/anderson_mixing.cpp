@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/linsolve/anderson_mixing.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cassert>
+#include <stdexcept>
+
+namespace fddem {
+namespace {
+
+constexpr std::size_t block_size = 4096;
+constexpr std::size_t min_size_for_threads = 16384;
+
+/// f(i) for i in [0, n), threaded when long (each element independent of the others).
+template <class F>
+void for_each_element(std::size_t n, F&& f)
+{
+    const auto count = static_cast<std::ptrdiff_t>(n);
+    [[maybe_unused]] const bool is_threaded = n >= min_size_for_threads;
+#pragma omp parallel for schedule(static) if (is_threaded)
+    for (std::ptrdiff_t i = 0; i < count; ++i) {
+        f(static_cast<std::size_t>(i));
+    }
+}
+
+std::size_t total_size(std::span<const std::span<double>> segments, std::size_t count)
+{
+    std::size_t n = 0;
+    for (std::size_t s = 0; s < count; ++s) {
+        n += segments[s].size();
+    }
+    return n;
+}
+
+/// f(segment value, flat index) over the first `count` segments, in order.
+template <class F>
+void for_each_in_segments(std::span<const std::span<double>> segments, std::size_t count, F&& f)
+{
+    std::size_t offset = 0;
+    for (std::size_t s = 0; s < count; ++s) {
+        const std::span<double> values = segments[s];
+        for_each_element(values.size(), [&](std::size_t i) { f(values[i], offset + i); });
+        offset += values.size();
+    }
+}
+
+} // namespace
+
+double blocked_dot(std::span<const double> a, std::span<const double> b)
+{
+    assert(a.size() == b.size());
+    const std::size_t n = a.size();
+    const std::size_t blocks = (n + block_size - 1) / block_size;
+    std::vector<double> partial(blocks, 0.0);
+    for_each_element(blocks, [&](std::size_t k) {
+        const std::size_t end = std::min(n, (k + 1) * block_size);
+        double acc = 0.0;
+        for (std::size_t i = k * block_size; i < end; ++i) {
+            acc += a[i] * b[i];
+        }
+        partial[k] = acc;
+    });
+    double sum = 0.0;
+    for (const double p : partial) {
+        sum += p;
+    }
+    return sum;
+}
+
+AndersonMixing::AndersonMixing(int depth)
+    : depth_(std::max(depth, 0)), delta_f_(static_cast<std::size_t>(depth_)),
+      delta_g_(static_cast<std::size_t>(depth_)),
+      gram_(static_cast<std::size_t>(depth_ * depth_), 0.0)
+{
+}
+
+void AndersonMixing::reset() noexcept
+{
+    has_previous_ = false;
+    columns_ = 0;
+    newest_ = -1;
+    gamma_.clear();
+}
+
+void AndersonMixing::remember(std::span<const std::span<double>> segments,
+                              std::size_t norm_segments)
+{
+    if (depth_ == 0) {
+        return;
+    }
+    x_.resize(total_size(segments, norm_segments));
+    for_each_in_segments(segments, norm_segments, [&](double v, std::size_t i) { x_[i] = v; });
+}
+
+void AndersonMixing::mix(std::span<const std::span<double>> segments, std::size_t norm_segments)
+{
+    if (depth_ == 0) {
+        return;
+    }
+    const std::size_t measured = total_size(segments, norm_segments);
+    const std::size_t all = total_size(segments, segments.size());
+    if (measured != x_.size()) {
+        throw std::logic_error("AndersonMixing::mix: the state's layout changed since remember()");
+    }
+    const auto m = static_cast<std::size_t>(depth_);
+    if (has_previous_) {
+        if (f_previous_.size() != measured || g_previous_.size() != all) {
+            throw std::logic_error("AndersonMixing::mix: the state's layout changed");
+        }
+        // The newest column: ΔF = f_k − f_{k−1}, ΔG = G(x_k) − G(x_{k−1}); then f_k, G(x_k)
+        // become the previous ones.
+        newest_ = (newest_ + 1) % depth_;
+        columns_ = std::min(columns_ + 1, depth_);
+        const auto s = static_cast<std::size_t>(newest_);
+        std::vector<double>& df = delta_f_[s];
+        std::vector<double>& dg = delta_g_[s];
+        df.resize(measured);
+        dg.resize(all);
+        for_each_in_segments(segments, norm_segments, [&](double g, std::size_t i) {
+            const double f = g - x_[i];
+            df[i] = f - f_previous_[i];
+            f_previous_[i] = f;
+        });
+        for_each_in_segments(segments, segments.size(), [&](double g, std::size_t i) {
+            dg[i] = g - g_previous_[i];
+            g_previous_[i] = g;
+        });
+        for (std::size_t j = 0; j < static_cast<std::size_t>(columns_); ++j) {
+            const double value = blocked_dot(df, delta_f_[j]);
+            gram_[s * m + j] = value;
+            gram_[j * m + s] = value;
+        }
+    } else {
+        f_previous_.resize(measured);
+        g_previous_.resize(all);
+        for_each_in_segments(segments, norm_segments,
+                             [&](double g, std::size_t i) { f_previous_[i] = g - x_[i]; });
+        for_each_in_segments(segments, segments.size(),
+                             [&](double g, std::size_t i) { g_previous_[i] = g; });
+        has_previous_ = true;
+    }
+    gamma_.clear();
+    if (columns_ == 0) {
+        return;
+    }
+
+    // γ from the normal equations ΔFᵀΔF γ = ΔFᵀ f_k, by a pseudo-inverse that drops the
+    // directions with eigenvalues below 1e-12 of the largest: nearly parallel columns (a
+    // converged mode) would otherwise get huge weights of opposite sign.
+    const auto n = static_cast<Eigen::Index>(columns_);
+    Eigen::MatrixXd gram(n, n);
+    Eigen::VectorXd rhs(n);
+    for (Eigen::Index a = 0; a < n; ++a) {
+        const auto sa = static_cast<std::size_t>(a);
+        for (Eigen::Index b = 0; b < n; ++b) {
+            gram(a, b) = gram_[sa * m + static_cast<std::size_t>(b)];
+        }
+        rhs(a) = blocked_dot(delta_f_[sa], f_previous_);
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
+    const Eigen::VectorXd& values = eigen.eigenvalues();
+    const double cutoff = 1e-12 * values.cwiseAbs().maxCoeff();
+    Eigen::VectorXd projected = eigen.eigenvectors().transpose() * rhs;
+    for (Eigen::Index k = 0; k < n; ++k) {
+        projected(k) = values(k) > cutoff ? projected(k) / values(k) : 0.0;
+    }
+    const Eigen::VectorXd gamma = eigen.eigenvectors() * projected;
+    for (int k = 0; k < columns_; ++k) { // newest first
+        gamma_.push_back(gamma(static_cast<Eigen::Index>((newest_ - k + depth_) % depth_)));
+    }
+
+    // x_{k+1} = G(x_k) − Σ γ_j ΔG_j
+    std::size_t offset = 0;
+    for (const std::span<double> values_of : segments) {
+        for_each_element(values_of.size(), [&](std::size_t i) {
+            double value = values_of[i];
+            for (Eigen::Index j = 0; j < n; ++j) {
+                value -= gamma(j) * delta_g_[static_cast<std::size_t>(j)][offset + i];
+            }
+            values_of[i] = value;
+        });
+        offset += values_of.size();
+    }
+}
+
+} // namespace fddem

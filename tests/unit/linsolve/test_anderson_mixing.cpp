@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+// Anderson mixing (linsolve/anderson_mixing.hpp): on a linear fixed point it is a Krylov method
+// (Walker & Ni 2011, Thm 2.2: with m at least the number of iterations, AA is equivalent to
+// GMRES), so an iteration with three distinct contraction factors converges to round-off in a
+// handful of steps, where the plain iteration needs hundreds.
+
+#include "fddem/linsolve/anderson_mixing.hpp"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#ifdef FDDEM_HAVE_OPENMP
+#include <omp.h>
+#endif
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace fddem {
+namespace {
+
+/// G(x) = M x + b with M = Q diag(factors) Qᵀ, Q a random orthogonal matrix.
+struct LinearMap {
+    Eigen::MatrixXd m;
+    Eigen::VectorXd b;
+    Eigen::VectorXd solution;
+
+    LinearMap(int n, const std::vector<double>& factors, unsigned seed)
+    {
+        std::mt19937 random(seed);
+        std::normal_distribution<double> normal;
+        Eigen::MatrixXd a(n, n);
+        for (int i = 0; i < n; ++i) {
+            for (int j = 0; j < n; ++j) {
+                a(i, j) = normal(random);
+            }
+        }
+        const Eigen::MatrixXd q = Eigen::HouseholderQR<Eigen::MatrixXd>(a).householderQ();
+        Eigen::VectorXd d(n);
+        for (int i = 0; i < n; ++i) {
+            d(i) = factors[static_cast<std::size_t>(i) % factors.size()];
+        }
+        m = q * d.asDiagonal() * q.transpose();
+        b = Eigen::VectorXd::NullaryExpr(n, [&] { return normal(random); });
+        solution = (Eigen::MatrixXd::Identity(n, n) - m).partialPivLu().solve(b);
+    }
+};
+
+/// The error after `iterations` steps of x ← G(x), mixed with depth `depth`.
+double error_after(const LinearMap& map, int depth, int iterations)
+{
+    AndersonMixing mixing(depth);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(map.b.size());
+    for (int k = 0; k < iterations; ++k) {
+        std::vector<std::span<double>> segments{{x.data(), static_cast<std::size_t>(x.size())}};
+        mixing.remember(segments, 1);
+        x = map.m * x + map.b;
+        mixing.mix(segments, 1);
+    }
+    return (x - map.solution).norm() / map.solution.norm();
+}
+
+TEST(AndersonMixing, ConvergesLikeAKrylovMethodOnALinearIteration)
+{
+    // Three distinct factors near one, as in the 18-disk pile's outer iterations.
+    const LinearMap map(60, {0.95, 0.9, 0.6}, 7);
+    const double plain = error_after(map, 0, 12);
+    const double mixed = error_after(map, 3, 12);
+    EXPECT_GT(plain, 0.3);  // 0.95^12 = 0.54 of the slowest component is left
+    EXPECT_LT(mixed, 1e-9); // minimal polynomial of degree 3: exact after a few steps
+}
+
+TEST(AndersonMixing, DepthOneAcceleratesASingleSlowMode)
+{
+    // One slow factor and fast ones: depth 1 removes the slow mode like a secant step.
+    const LinearMap map(40, {0.93, 0.2, 0.1, 0.05}, 11);
+    const double plain = error_after(map, 0, 15);
+    const double mixed = error_after(map, 1, 15);
+    EXPECT_LT(mixed, 1e-3 * plain);
+}
+
+TEST(AndersonMixing, DepthZeroIsThePlainIteration)
+{
+    AndersonMixing mixing(0);
+    std::vector<double> x(20, 1.0);
+    std::vector<double> g(20, 2.0);
+    std::vector<std::span<double>> before{x};
+    std::vector<std::span<double>> after{g};
+    mixing.remember(before, 1);
+    mixing.mix(after, 1);
+    mixing.remember(after, 1);
+    mixing.mix(after, 1);
+    for (const double v : g) {
+        EXPECT_EQ(v, 2.0);
+    }
+}
+
+TEST(AndersonMixing, KeepsALinearConstraintEveryOutputSatisfies)
+{
+    // G projects onto Σx = 1 (the analogue of a divergence-free velocity): the mixed iterates,
+    // combinations with weights summing to one, satisfy it too.
+    const int n = 30;
+    const LinearMap map(n, {0.9, 0.7, 0.3}, 5);
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(n);
+    AndersonMixing mixing(3);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+    for (int k = 0; k < 8; ++k) {
+        std::vector<std::span<double>> segments{{x.data(), static_cast<std::size_t>(n)}};
+        mixing.remember(segments, 1);
+        Eigen::VectorXd g = map.m * x + map.b;
+        g += ones * (1.0 - g.sum()) / n;
+        x = g;
+        mixing.mix(segments, 1);
+        EXPECT_NEAR(x.sum(), 1.0, 1e-12) << "iteration " << k;
+        if (k >= 2) {
+            EXPECT_FALSE(mixing.last_weights().empty());
+        }
+    }
+}
+
+TEST(AndersonMixing, CarriesUnmeasuredSegmentsWithTheSameWeights)
+{
+    // The carried segment y = C x is derived from the measured one: after mixing it must still
+    // be C x of the mixed x (the bodies' U from the fluid in fddem), and must not change γ.
+    const int n = 25;
+    const LinearMap map(n, {0.95, 0.8, 0.4}, 9);
+    Eigen::MatrixXd c = Eigen::MatrixXd::Random(3, n);
+    AndersonMixing with_carried(2);
+    AndersonMixing measured_only(2);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd x_alone = x;
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(3);
+    for (int k = 0; k < 6; ++k) {
+        std::vector<std::span<double>> segments{{x.data(), static_cast<std::size_t>(n)},
+                                                {y.data(), 3}};
+        std::vector<std::span<double>> alone{{x_alone.data(), static_cast<std::size_t>(n)}};
+        with_carried.remember(segments, 1);
+        measured_only.remember(alone, 1);
+        x = map.m * x + map.b;
+        y = c * x;
+        x_alone = map.m * x_alone + map.b;
+        with_carried.mix(segments, 1);
+        measured_only.mix(alone, 1);
+        EXPECT_LT((y - c * x).norm(), 1e-12 * (1.0 + y.norm())) << "iteration " << k;
+        EXPECT_LT((x - x_alone).norm(), 1e-13 * x.norm()) << "iteration " << k;
+    }
+}
+
+TEST(AndersonMixing, RejectsAStateWhoseLayoutChanged)
+{
+    AndersonMixing mixing(2);
+    std::vector<double> a(10, 0.0);
+    std::vector<double> b(12, 0.0);
+    std::vector<std::span<double>> small{a};
+    std::vector<std::span<double>> large{b};
+    mixing.remember(small, 1);
+    EXPECT_THROW(mixing.mix(large, 1), std::logic_error);
+}
+
+TEST(AndersonMixing, BlockedDotIsTheSameForAnyThreadCount)
+{
+    std::mt19937 random(1);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::vector<double> a(100003);
+    std::vector<double> b(a.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        a[i] = uniform(random);
+        b[i] = uniform(random);
+    }
+    long double exact = 0.0L;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        exact += static_cast<long double>(a[i]) * static_cast<long double>(b[i]);
+    }
+#ifdef FDDEM_HAVE_OPENMP
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const double one = blocked_dot(a, b);
+    omp_set_num_threads(2);
+    const double two = blocked_dot(a, b);
+    omp_set_num_threads(threads);
+    EXPECT_EQ(one, two);
+#endif
+    EXPECT_NEAR(blocked_dot(a, b), static_cast<double>(exact), 1e-10);
+}
+
+} // namespace
+} // namespace fddem
