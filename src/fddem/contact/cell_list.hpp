@@ -24,6 +24,9 @@ public:
     /// into the edge cells (they are still found).
     void find_pairs(std::span<const Vec<Dim>> centres, std::vector<std::pair<int, int>>& pairs);
 
+    /// The interaction range [m].
+    [[nodiscard]] double range() const noexcept { return range_; }
+
     [[nodiscard]] int n_cells(int axis) const noexcept
     {
         return n_[static_cast<std::size_t>(axis)];

@@ -3,6 +3,7 @@
 
 #include "fddem/contact/contact_geometry.hpp"
 #include "fddem/contact/dem_integrator.hpp"
+#include "fddem/contact/neighbour_list.hpp"
 #include "fddem/contact/tangential_contact.hpp"
 
 #include <algorithm>
@@ -27,10 +28,17 @@ PairSide side_of(const DemBody<Dim>& b)
 template <int Dim, class Model>
 class ContactForces {
 public:
-    ContactForces(std::size_t n, const DemWalls<Dim>& walls, const Model& model,
-                  ContactHistory<Dim>& history, double margin)
-        : force(n), torque(n), walls_(walls), model_(model), history_(history), margin_(margin)
+    ContactForces(std::span<const DemBody<Dim>> bodies, const DemWalls<Dim>& walls,
+                  const Model& model, ContactHistory<Dim>& history, double margin,
+                  const CellList<Dim>& cells)
+        : force(bodies.size()), torque(bodies.size()), walls_(walls), model_(model),
+          history_(history), margin_(margin), neighbours_(margin, largest_radius(bodies), cells)
     {
+        neighbours_.set_walls(walls.origin, walls.length, walls.has_walls);
+        radii_.reserve(bodies.size());
+        for (const DemBody<Dim>& b : bodies) {
+            radii_.push_back(b.radius);
+        }
     }
 
     /// Forces at the bodies' state. `step` = Δt_i; the springs stretch by v_t Δt_i only if
@@ -44,13 +52,13 @@ public:
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             centres_[b] = bodies[b].centre;
         }
-        cells.find_pairs(centres_, pairs_);
+        neighbours_.refresh(centres_, radii_, cells);
         previous_.springs.swap(history_.springs);
         history_.springs.clear();
         step_ = step;
         stretch_ = is_new_substep ? step : 0.0;
         in_contact = 0;
-        for (const auto& [i, j] : pairs_) {
+        for (const auto& [i, j] : neighbours_.pairs()) {
             const auto a = static_cast<std::size_t>(i);
             const auto b = static_cast<std::size_t>(j);
             if (!bodies[a].is_mobile && !bodies[b].is_mobile) {
@@ -65,27 +73,21 @@ public:
             apply(g, a, b, {i, j}, make_contact_pair(side_of(bodies[a]), side_of(bodies[b])),
                   std::min(bodies[a].radius, bodies[b].radius), outcome);
         }
-        for (std::size_t a = 0; a < bodies.size(); ++a) {
+        for (const auto& [body, d, side] : neighbours_.walls()) {
+            const auto a = static_cast<std::size_t>(body);
             if (!bodies[a].is_mobile) {
                 continue;
             }
-            for (int d = 0; d < Dim; ++d) {
-                const auto axis = static_cast<std::size_t>(d);
-                if (!walls_.has_walls[axis]) {
-                    continue;
-                }
-                for (int side = 0; side < 2; ++side) {
-                    const double at = walls_.origin[d] + side * walls_.length[d];
-                    const ContactGeometry<Dim> g =
-                        ball_wall_contact(ball_of(bodies[a]), d, side, at,
-                                          walls_.velocity[axis][static_cast<std::size_t>(side)]);
-                    mark_if_near(g.overlap, a, bodies.size(), outcome);
-                    if (g.overlap > 0.0) {
-                        apply(g, a, bodies.size(), wall_contact_key(static_cast<int>(a), d, side),
-                              make_contact_pair(side_of(bodies[a]), wall_side(walls_.material)),
-                              bodies[a].radius, outcome);
-                    }
-                }
+            const auto axis = static_cast<std::size_t>(d);
+            const double at = walls_.origin[d] + side * walls_.length[d];
+            const ContactGeometry<Dim> g =
+                ball_wall_contact(ball_of(bodies[a]), d, side, at,
+                                  walls_.velocity[axis][static_cast<std::size_t>(side)]);
+            mark_if_near(g.overlap, a, bodies.size(), outcome);
+            if (g.overlap > 0.0) {
+                apply(g, a, bodies.size(), wall_contact_key(body, d, side),
+                      make_contact_pair(side_of(bodies[a]), wall_side(walls_.material)),
+                      bodies[a].radius, outcome);
             }
         }
         std::sort(history_.springs.begin(), history_.springs.end(),
@@ -154,7 +156,17 @@ private:
     double step_ = 0.0;            ///< Δt_i [s]
     double stretch_ = 0.0;         ///< time over which the springs stretch now [s]
     std::vector<Vec<Dim>> centres_;
-    std::vector<std::pair<int, int>> pairs_;
+    std::vector<double> radii_;
+    NeighbourList<Dim> neighbours_; ///< candidates for this step's sub-steps
+
+    static double largest_radius(std::span<const DemBody<Dim>> bodies)
+    {
+        double largest = 0.0;
+        for (const DemBody<Dim>& b : bodies) {
+            largest = std::max(largest, b.radius);
+        }
+        return largest;
+    }
 };
 
 template <int Dim, class Model>
@@ -170,7 +182,7 @@ DemOutcome<Dim> advance_with(const Model& model, std::span<DemBody<Dim>> bodies,
     const double step = dt / settings.substeps;
     const double half = 0.5 * step;
     const double weight = 1.0 / settings.substeps; // each sub-step's share of the mean
-    ContactForces<Dim, Model> contacts(n, walls, model, history, settings.margin);
+    ContactForces<Dim, Model> contacts(bodies, walls, model, history, settings.margin, cells);
     contacts.evaluate(bodies, cells, step, false, outcome);
     const auto kick = [&](std::size_t b) {
         DemBody<Dim>& body = bodies[b];

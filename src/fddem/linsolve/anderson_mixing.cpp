@@ -25,22 +25,50 @@ void for_each_element(std::size_t n, F&& f)
     }
 }
 
-std::size_t total_size(std::span<const std::span<double>> segments, std::size_t count)
+/// The number of leading segments with a positive weight (the measured ones).
+std::size_t measured_segments(std::span<const MixedSegment> segments)
 {
     std::size_t n = 0;
-    for (std::size_t s = 0; s < count; ++s) {
-        n += segments[s].size();
+    while (n < segments.size() && segments[n].weight > 0.0) {
+        ++n;
+    }
+    for (std::size_t s = n; s < segments.size(); ++s) {
+        if (segments[s].weight != 0.0) {
+            throw std::logic_error("AndersonMixing: measured segments must come first");
+        }
     }
     return n;
 }
 
-/// f(segment value, flat index) over the first `count` segments, in order.
+std::size_t total_size(std::span<const MixedSegment> segments, std::size_t count)
+{
+    std::size_t n = 0;
+    for (std::size_t s = 0; s < count; ++s) {
+        n += segments[s].values.size();
+    }
+    return n;
+}
+
+/// f(weight · segment value, flat index) over the first `count` segments, in order.
 template <class F>
-void for_each_in_segments(std::span<const std::span<double>> segments, std::size_t count, F&& f)
+void for_each_in_segments(std::span<const MixedSegment> segments, std::size_t count, F&& f)
 {
     std::size_t offset = 0;
     for (std::size_t s = 0; s < count; ++s) {
-        const std::span<double> values = segments[s];
+        const std::span<double> values = segments[s].values;
+        const double weight = segments[s].weight;
+        for_each_element(values.size(), [&](std::size_t i) { f(weight * values[i], offset + i); });
+        offset += values.size();
+    }
+}
+
+/// f(segment value, flat index) over all segments, in order.
+template <class F>
+void for_each_value(std::span<const MixedSegment> segments, F&& f)
+{
+    std::size_t offset = 0;
+    for (const MixedSegment& segment : segments) {
+        const std::span<double> values = segment.values;
         for_each_element(values.size(), [&](std::size_t i) { f(values[i], offset + i); });
         offset += values.size();
     }
@@ -84,21 +112,22 @@ void AndersonMixing::reset() noexcept
     gamma_.clear();
 }
 
-void AndersonMixing::remember(std::span<const std::span<double>> segments,
-                              std::size_t norm_segments)
+void AndersonMixing::remember(std::span<const MixedSegment> segments)
 {
     if (depth_ == 0) {
         return;
     }
+    const std::size_t norm_segments = measured_segments(segments);
     x_.resize(total_size(segments, norm_segments));
     for_each_in_segments(segments, norm_segments, [&](double v, std::size_t i) { x_[i] = v; });
 }
 
-void AndersonMixing::mix(std::span<const std::span<double>> segments, std::size_t norm_segments)
+void AndersonMixing::mix(std::span<const MixedSegment> segments)
 {
     if (depth_ == 0) {
         return;
     }
+    const std::size_t norm_segments = measured_segments(segments);
     const std::size_t measured = total_size(segments, norm_segments);
     const std::size_t all = total_size(segments, segments.size());
     if (measured != x_.size()) {
@@ -123,7 +152,7 @@ void AndersonMixing::mix(std::span<const std::span<double>> segments, std::size_
             df[i] = f - f_previous_[i];
             f_previous_[i] = f;
         });
-        for_each_in_segments(segments, segments.size(), [&](double g, std::size_t i) {
+        for_each_value(segments, [&](double g, std::size_t i) {
             dg[i] = g - g_previous_[i];
             g_previous_[i] = g;
         });
@@ -137,8 +166,7 @@ void AndersonMixing::mix(std::span<const std::span<double>> segments, std::size_
         g_previous_.resize(all);
         for_each_in_segments(segments, norm_segments,
                              [&](double g, std::size_t i) { f_previous_[i] = g - x_[i]; });
-        for_each_in_segments(segments, segments.size(),
-                             [&](double g, std::size_t i) { g_previous_[i] = g; });
+        for_each_value(segments, [&](double g, std::size_t i) { g_previous_[i] = g; });
         has_previous_ = true;
     }
     gamma_.clear();
@@ -173,15 +201,16 @@ void AndersonMixing::mix(std::span<const std::span<double>> segments, std::size_
 
     // x_{k+1} = G(x_k) − Σ γ_j ΔG_j
     std::size_t offset = 0;
-    for (const std::span<double> values_of : segments) {
-        for_each_element(values_of.size(), [&](std::size_t i) {
-            double value = values_of[i];
+    for (const MixedSegment& segment : segments) {
+        const std::span<double> out = segment.values;
+        for_each_element(out.size(), [&](std::size_t i) {
+            double value = out[i];
             for (Eigen::Index j = 0; j < n; ++j) {
                 value -= gamma(j) * delta_g_[static_cast<std::size_t>(j)][offset + i];
             }
-            values_of[i] = value;
+            out[i] = value;
         });
-        offset += values_of.size();
+        offset += out.size();
     }
 }
 

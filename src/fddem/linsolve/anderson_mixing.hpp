@@ -21,15 +21,23 @@
 /// is a few vector updates and an m × m least-squares problem (Eigen).
 ///
 /// The state is a list of segments (spans over the live arrays) with the same layout at every
-/// call between resets. The first `norm_segments` enter the least-squares norm; the others are
-/// carried along: mixed with the same weights, but not measured. Sums are taken in fixed
-/// blocks added in block order, so the result is bit-identical for any thread count.
+/// call between resets. Segments with a positive weight enter the least-squares norm, each
+/// entry multiplied by its segment's weight (e.g. an angular velocity by a radius, to compare
+/// it with velocities); they must come first. Segments of weight 0 are carried along: mixed
+/// with the same γ, but not measured. Sums are taken in fixed blocks added in block order, so
+/// the result is bit-identical for any thread count.
 
 #include <cstddef>
 #include <span>
 #include <vector>
 
 namespace fddem {
+
+/// One part of the mixed state: live values and their weight in the norm (0: carried).
+struct MixedSegment {
+    std::span<double> values;
+    double weight = 0.0;
+};
 
 class AndersonMixing {
 public:
@@ -40,11 +48,11 @@ public:
     void reset() noexcept;
 
     /// Takes x_k: the measured segments of the state before an iteration.
-    void remember(std::span<const std::span<double>> segments, std::size_t norm_segments);
+    void remember(std::span<const MixedSegment> segments);
 
     /// The segments hold G(x_k) of the x_k last remembered; overwrites them with x_{k+1}. The
     /// first call after reset() leaves them as they are.
-    void mix(std::span<const std::span<double>> segments, std::size_t norm_segments);
+    void mix(std::span<const MixedSegment> segments);
 
     [[nodiscard]] int depth() const noexcept { return depth_; }
     /// The weights γ of the last mix() (newest difference first), for tests and diagnostics.
@@ -52,8 +60,8 @@ public:
 
 private:
     int depth_;
-    std::vector<double> x_;          ///< the measured part of x_k
-    std::vector<double> f_previous_; ///< f_{k−1} (measured part)
+    std::vector<double> x_;          ///< the measured part of x_k, weighted
+    std::vector<double> f_previous_; ///< f_{k−1} (measured part, weighted)
     std::vector<double> g_previous_; ///< G(x_{k−1}) (all segments)
     bool has_previous_ = false;
     /// ΔF (measured part) and ΔG (all) columns: a ring of `depth_` slots, `columns_` of them

@@ -226,10 +226,9 @@ private:
     void advance_time_level_in_systems();
     /// Tracks rest_since_ after a step (time.rest_speed).
     void track_rest();
-    /// The outer iterate as Anderson mixing sees it (docs/method.md §2): the velocity
-    /// components (measured), then p, λ and the bodies' U, ω (carried along). Returns the
-    /// number of measured segments.
-    std::size_t collect_iterate(std::vector<std::span<double>>& segments);
+    /// The outer iterate as Anderson mixing sees it (docs/method.md §4): the bodies' U and ω
+    /// (measured), then λ, u and p (carried along).
+    void collect_iterate(std::vector<MixedSegment>& segments);
 
     CaseConfig config_;
     MacGrid<Dim> grid_;
@@ -265,7 +264,7 @@ private:
     double rest_since_ = -1.0; ///< see at_rest_since(); negative: some body is moving
     PressureUpdate pressure_update_;
     AndersonMixing mixing_; ///< of the outer iterate, reset every step
-    std::vector<std::span<double>> iterate_;
+    std::vector<MixedSegment> iterate_;
 };
 
 } // namespace fddem

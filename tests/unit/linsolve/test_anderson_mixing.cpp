@@ -53,10 +53,11 @@ double error_after(const LinearMap& map, int depth, int iterations)
     AndersonMixing mixing(depth);
     Eigen::VectorXd x = Eigen::VectorXd::Zero(map.b.size());
     for (int k = 0; k < iterations; ++k) {
-        std::vector<std::span<double>> segments{{x.data(), static_cast<std::size_t>(x.size())}};
-        mixing.remember(segments, 1);
+        const std::vector<MixedSegment> segments{
+            {{x.data(), static_cast<std::size_t>(x.size())}, 1.0}};
+        mixing.remember(segments);
         x = map.m * x + map.b;
-        mixing.mix(segments, 1);
+        mixing.mix(segments);
     }
     return (x - map.solution).norm() / map.solution.norm();
 }
@@ -85,12 +86,12 @@ TEST(AndersonMixing, DepthZeroIsThePlainIteration)
     AndersonMixing mixing(0);
     std::vector<double> x(20, 1.0);
     std::vector<double> g(20, 2.0);
-    std::vector<std::span<double>> before{x};
-    std::vector<std::span<double>> after{g};
-    mixing.remember(before, 1);
-    mixing.mix(after, 1);
-    mixing.remember(after, 1);
-    mixing.mix(after, 1);
+    const std::vector<MixedSegment> before{{x, 1.0}};
+    const std::vector<MixedSegment> after{{g, 1.0}};
+    mixing.remember(before);
+    mixing.mix(after);
+    mixing.remember(after);
+    mixing.mix(after);
     for (const double v : g) {
         EXPECT_EQ(v, 2.0);
     }
@@ -106,12 +107,12 @@ TEST(AndersonMixing, KeepsALinearConstraintEveryOutputSatisfies)
     AndersonMixing mixing(3);
     Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
     for (int k = 0; k < 8; ++k) {
-        std::vector<std::span<double>> segments{{x.data(), static_cast<std::size_t>(n)}};
-        mixing.remember(segments, 1);
+        const std::vector<MixedSegment> segments{{{x.data(), static_cast<std::size_t>(n)}, 1.0}};
+        mixing.remember(segments);
         Eigen::VectorXd g = map.m * x + map.b;
         g += ones * (1.0 - g.sum()) / n;
         x = g;
-        mixing.mix(segments, 1);
+        mixing.mix(segments);
         EXPECT_NEAR(x.sum(), 1.0, 1e-12) << "iteration " << k;
         if (k >= 2) {
             EXPECT_FALSE(mixing.last_weights().empty());
@@ -132,16 +133,16 @@ TEST(AndersonMixing, CarriesUnmeasuredSegmentsWithTheSameWeights)
     Eigen::VectorXd x_alone = x;
     Eigen::VectorXd y = Eigen::VectorXd::Zero(3);
     for (int k = 0; k < 6; ++k) {
-        std::vector<std::span<double>> segments{{x.data(), static_cast<std::size_t>(n)},
-                                                {y.data(), 3}};
-        std::vector<std::span<double>> alone{{x_alone.data(), static_cast<std::size_t>(n)}};
-        with_carried.remember(segments, 1);
-        measured_only.remember(alone, 1);
+        const std::vector<MixedSegment> segments{{{x.data(), static_cast<std::size_t>(n)}, 1.0},
+                                                 {{y.data(), 3}, 0.0}};
+        const std::vector<MixedSegment> alone{{{x_alone.data(), static_cast<std::size_t>(n)}, 1.0}};
+        with_carried.remember(segments);
+        measured_only.remember(alone);
         x = map.m * x + map.b;
         y = c * x;
         x_alone = map.m * x_alone + map.b;
-        with_carried.mix(segments, 1);
-        measured_only.mix(alone, 1);
+        with_carried.mix(segments);
+        measured_only.mix(alone);
         EXPECT_LT((y - c * x).norm(), 1e-12 * (1.0 + y.norm())) << "iteration " << k;
         EXPECT_LT((x - x_alone).norm(), 1e-13 * x.norm()) << "iteration " << k;
     }
@@ -152,10 +153,39 @@ TEST(AndersonMixing, RejectsAStateWhoseLayoutChanged)
     AndersonMixing mixing(2);
     std::vector<double> a(10, 0.0);
     std::vector<double> b(12, 0.0);
-    std::vector<std::span<double>> small{a};
-    std::vector<std::span<double>> large{b};
-    mixing.remember(small, 1);
-    EXPECT_THROW(mixing.mix(large, 1), std::logic_error);
+    const std::vector<MixedSegment> small{{a, 1.0}};
+    const std::vector<MixedSegment> large{{b, 1.0}};
+    mixing.remember(small);
+    EXPECT_THROW(mixing.mix(large), std::logic_error);
+    const std::vector<MixedSegment> carried_first{{a, 0.0}, {b, 1.0}};
+    EXPECT_THROW(mixing.remember(carried_first), std::logic_error);
+}
+
+TEST(AndersonMixing, WeightsScaleTheNormAsIfTheValuesWereScaled)
+{
+    // Measuring x with weight w gives the same iterates as measuring the scaled map's w·x
+    // with weight 1: a weight is a change of units (ω measured at the rim, ×R).
+    const int n = 20;
+    const LinearMap map(n, {0.9, 0.6, 0.3}, 13);
+    Eigen::VectorXd weights = Eigen::VectorXd::LinSpaced(n, 0.5, 3.0);
+    AndersonMixing weighted(2);
+    AndersonMixing scaled(2);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(n); // z = W x
+    for (int k = 0; k < 6; ++k) {
+        std::vector<MixedSegment> parts;
+        for (int i = 0; i < n; ++i) {
+            parts.push_back({{&x(i), 1}, weights(i)});
+        }
+        const std::vector<MixedSegment> whole{{{z.data(), static_cast<std::size_t>(n)}, 1.0}};
+        weighted.remember(parts);
+        scaled.remember(whole);
+        x = map.m * x + map.b;
+        z = weights.asDiagonal() * (map.m * (weights.cwiseInverse().asDiagonal() * z) + map.b);
+        weighted.mix(parts);
+        scaled.mix(whole);
+        EXPECT_LT((weights.asDiagonal() * x - z).norm(), 1e-12 * z.norm()) << "iteration " << k;
+    }
 }
 
 TEST(AndersonMixing, BlockedDotIsTheSameForAnyThreadCount)
