@@ -620,14 +620,21 @@ StepReport Simulation<Dim>::advance_unguarded()
         // eqs. (13)–(16): rigid-body velocities, marker forces, the correction spread to u.
         if (has_bodies) {
             start = std::chrono::steady_clock::now();
-            const double scale = std::max(velocity_scale, reference_velocity());
+            double scale = std::max(velocity_scale, reference_velocity());
             std::vector<Vec<Dim>> previous_velocity;
             std::vector<AngularVec<Dim>> previous_omega;
             for (const RigidBody<Dim>& body : bodies_) {
                 previous_velocity.push_back(body.velocity);
                 previous_omega.push_back(body.omega);
             }
-            rigid_defect = update_bodies(dt) / scale;
+            const double defect = update_bodies(dt);
+            if (scale <= std::numeric_limits<double>::min()) {
+                // Fluid and bodies at rest until this update (the first iteration of a run
+                // from rest): measure against the motion it started, not the floor of
+                // reference_velocity(), which would overflow (a light disk under g = 980).
+                scale = reference_velocity();
+            }
+            rigid_defect = defect / scale;
             body_change = 0.0;
             for (std::size_t b = 0; b < bodies_.size(); ++b) {
                 double spin = 0.0;
