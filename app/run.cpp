@@ -178,7 +178,7 @@ int Run<Dim>::step_to_end()
     const auto rest = sim_.at_rest_since();
     const std::string settled =
         rest && config_.rest_speed
-            ? fmt::format(" (every body slower than time.rest_speed = {:g} since t = {:g} s)",
+            ? fmt::format(" (every free body slower than time.rest_speed = {:g} since t = {:g} s)",
                           *config_.rest_speed, *rest)
             : std::string();
     std::fprintf(stderr,

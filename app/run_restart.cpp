@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <optional>
+#include <utility>
 
 #include "run.hpp"
 
@@ -25,22 +26,24 @@ struct Damaged {
     std::string reason;
 };
 
-/// Why the case ends where the checkpoint is, for the "nothing to do" message.
-std::string end_reason(const CaseConfig& config, const Clock& clock)
+/// Why the case ends where the checkpoint is, and the --set that runs it further, for the
+/// "nothing to do" message.
+std::pair<std::string, std::string> end_reason(const CaseConfig& config, const Clock& clock,
+                                               std::optional<double> at_rest_since)
 {
     if (clock.step >= config.max_steps) {
-        return fmt::format("time.max_steps = {}", config.max_steps);
+        return {fmt::format("time.max_steps = {}", config.max_steps), "time.max_steps=…"};
     }
     if (config.end_time && clock.time >= *config.end_time - 0.5 * clock.dt) {
-        return fmt::format("time.end = {:g} s", *config.end_time);
+        return {fmt::format("time.end = {:g} s", *config.end_time), "time.end=…"};
     }
-    if (!config.rest_speed) {
-        return "the flow is steady (time.steady_tolerance)";
+    // A settled or steady run stays so: only a later time.min_end lets it go on.
+    if (config.rest_speed && at_rest_since) {
+        return {fmt::format("every free body has been at rest since t = {:g} s (time.rest_speed)",
+                            *at_rest_since),
+                "time.min_end=…"};
     }
-    return config.steady_tolerance
-               ? "every body has settled or the flow is steady (time.rest_speed, "
-                 "time.steady_tolerance)"
-               : "every body has settled (time.rest_speed)";
+    return {"the flow is steady (time.steady_tolerance)", "time.min_end=…"};
 }
 
 } // namespace
@@ -73,11 +76,11 @@ int Run<Dim>::resume(bool has_overrides)
     }
     const Clock& clock = sim_.clock();
     if (sim_.is_finished(record_.last)) {
+        const auto [reason, extend] = end_reason(config_, clock, sim_.at_rest_since());
         progress_.message(fmt::format(
             "fddem: {} is complete: step {}, t = {:g} s is the end of its case ({}); nothing to "
-            "do. To run further: fddem run --restart {} --set time.end=…",
-            directory_.string(), clock.step, clock.time, end_reason(config_, clock),
-            directory_.string()));
+            "do. To run further: fddem run --restart {} --set {}",
+            directory_.string(), clock.step, clock.time, reason, directory_.string(), extend));
         return exit_success;
     }
     const fs::path solver_path = directory_ / "solver.csv";

@@ -127,6 +127,50 @@ TEST_F(Cli, HyprePressureSolverStartsMpiOnDemandAndAgreesWithFftw)
     EXPECT_LT(largest, 1e-7);
 }
 
+TEST_F(Cli, SettledRunStopsAndTellsHowToGoOn)
+{
+    // A neutrally buoyant disk rests from the first step: time.rest_speed ends the run at
+    // time.min_end, not time.end; the continuation says to raise time.min_end, and doing so
+    // runs on.
+    const fs::path case_file = root_ / "resting.toml";
+    std::ofstream(case_file) << R"([domain]
+size = [1.0, 1.0]
+cells = [16, 16]
+[fluid]
+density = 1.0
+viscosity = 0.1
+gravity = [0.0, -10.0]
+[time]
+dt = 0.02
+end = 5.0
+rest_speed = 1e-6
+rest_duration = 0.04
+min_end = 0.1
+[[bodies]]
+diameter = 0.25
+density = 1.0
+position = [0.5, 0.5]
+)";
+    const fs::path out = root_ / "resting";
+    const Result first = run("run " + case_file.string() + " -o " + out.string());
+    ASSERT_EQ(first.status, 0) << first.output;
+    EXPECT_NE(first.output.find("every free body slower than time.rest_speed"), std::string::npos)
+        << first.output;
+    const std::string summary = fddem::test::file_contents(out / "summary.json");
+    EXPECT_NE(summary.find("\"steps\" : 5,"), std::string::npos) << summary; // t = 0.1
+    EXPECT_NE(summary.find("\"at_rest_since\" : 0.02"), std::string::npos) << summary;
+
+    const Result again = run("run --restart " + out.string());
+    ASSERT_EQ(again.status, 0) << again.output;
+    EXPECT_NE(again.output.find("nothing to do"), std::string::npos) << again.output;
+    EXPECT_NE(again.output.find("--set time.min_end="), std::string::npos) << again.output;
+
+    const Result further = run("run --restart " + out.string() + " --set time.min_end=0.2");
+    ASSERT_EQ(further.status, 0) << further.output;
+    const std::string extended = fddem::test::file_contents(out / "summary.json");
+    EXPECT_NE(extended.find("\"steps\" : 10,"), std::string::npos) << extended;
+}
+
 TEST_F(Cli, ExistingRunDirectoryIsKeptWithoutForce)
 {
     const fs::path out = root_ / "run";

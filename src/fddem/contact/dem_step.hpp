@@ -81,8 +81,11 @@ struct DemOutcome {
 };
 
 /// Advances `bodies` (centre, velocity, omega) through settings.substeps sub-steps of dt (one
-/// time step). `history` holds the tangential springs of the open contacts, body indices being
-/// positions in `bodies`; on return it holds those open at the end of the step.
+/// time step). `cells` must reach at least 2 r_max + settings.margin; what it reaches beyond
+/// is the skin of the sub-steps' neighbour list (contact/neighbour_list.hpp: none, and the list
+/// is rebuilt at every sub-step, if it reaches no further). `history` holds the tangential springs
+/// of the open contacts, body indices being positions in `bodies`; on return it holds those open at
+/// the end of the step.
 template <int Dim>
 DemOutcome<Dim> advance_contacts(std::span<DemBody<Dim>> bodies, const DemWalls<Dim>& walls,
                                  const DemSettings& settings, double dt, CellList<Dim>& cells,

@@ -5,7 +5,9 @@
 /// list with a reach `skin` beyond the contact range and kept until some body has moved more
 /// than skin/2 since. A pair missing from the list was farther apart than contact + margin +
 /// skin when it was built, and two bodies that each moved less than skin/2 have closed that
-/// gap by less than skin: no contact and no near miss (DemSettings::margin) is ever missed.
+/// gap by less than skin: no contact and no near miss (DemSettings::margin) is ever missed
+/// that the cell list itself would find (it does not wrap periodic axes: contacts across a
+/// periodic boundary are not found, with or without this list).
 ///
 /// Why: the DEM takes thousands of sub-steps per fluid step (2299 in the paper's cases with
 /// k = 1e7), and rebuilding the cell list at every one of them was most of the contact time.

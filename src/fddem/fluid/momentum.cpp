@@ -179,6 +179,9 @@ double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
         const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
         const int lo = box.lo[0];
         const int hi = box.hi[0];
+        if (hi <= lo) {
+            return 0.0; // no unknown face in this row
+        }
         Index<Dim> c = row;
         double row_max = 0.0;
         // The two end faces, with whatever boundary treatment they have ...

@@ -53,10 +53,12 @@ double correct_pressure_and_velocity(const MacGrid<Dim>& grid, const BoundaryCon
     }
     // eq. (10): p = p* + α_p p′, or p* + α_p (p′ − μ ∇·u*) (rotational); `divergence` holds
     // (ρf/Δt) ∇·u*.
-    const double rotational =
+    // Paper deviation (the rotational update; see the header): μΔt/ρf [m²], 0 for eq. (10).
+    const double rotational_factor =
         update == PressureUpdate::rotational ? fluid.viscosity / source_factor : 0.0;
     for_each_index(grid.owned_cells(), [&](const Index<Dim>& c) {
-        state.p(c) += pressure_relaxation * (state.p_corr(c) - rotational * state.divergence(c));
+        state.p(c) +=
+            pressure_relaxation * (state.p_corr(c) - rotational_factor * state.divergence(c));
     });
     fill_velocity_ghosts(grid, bc, state.u);
     fill_cell_ghosts(grid, bc, state.p);

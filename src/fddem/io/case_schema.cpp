@@ -138,7 +138,8 @@ std::vector<KeySpec> case_schema()
                              "below this (L the smallest box side, U the largest speed).")));
     s.push_back(positive(key("time", "rest_speed", T::real, "m/s", "none",
                              "Stop when the particles have settled: every free body's speed "
-                             "|U| + |ω|R below this for time.rest_duration.")));
+                             "|U| + |ω|R below this for time.rest_duration (bodies at rest from "
+                             "the start count as settled: see time.min_end).")));
     s.push_back(positive(key("time", "rest_duration", T::real, "s", "0.1",
                              "How long every free body must stay below time.rest_speed.")));
     s.push_back(ranged(key("time", "min_end", T::real, "s", "0",
@@ -172,7 +173,7 @@ std::vector<KeySpec> case_schema()
     s.push_back(ranged(key("simple", "acceleration_depth", T::integer, none, "2",
                            "Anderson acceleration of the outer iterations of a step with "
                            "bodies: how many earlier iterates it combines (0: off; "
-                           "docs/method.md §2)."),
+                           "docs/method.md §4)."),
                        0, 10, false, false));
     s.push_back(ranged(key("simple", "momentum_sweeps", T::integer, none, "4",
                            "Red-black Gauss–Seidel sweeps of the momentum equations per V-cycle "

@@ -10,7 +10,13 @@
 namespace fddem {
 namespace {
 
+// A kernel of its own (STYLE.md §4): its vectors are flat concatenations of grid arrays and
+// marker lists, not boxes of a grid, so grid/loops.hpp's loops do not apply.
+// Block of the sums: long enough to amortise the partial sums, short enough for several per
+// thread at the paper's grid sizes (10⁵ values); fixed, so that sums do not depend on threads.
 constexpr std::size_t block_size = 4096;
+// Below this many values a loop is not worth a parallel region (grid/loops.hpp's 8192 cells
+// are 16384 values of a 2D component and its neighbour).
 constexpr std::size_t min_size_for_threads = 16384;
 
 /// f(i) for i in [0, n), threaded when long (each element independent of the others).
@@ -28,6 +34,11 @@ void for_each_element(std::size_t n, F&& f)
 /// The number of leading segments with a positive weight (the measured ones).
 std::size_t measured_segments(std::span<const MixedSegment> segments)
 {
+    for (const MixedSegment& segment : segments) {
+        if (!(segment.weight >= 0.0)) {
+            throw std::logic_error("AndersonMixing: a segment's weight must be 0 or positive");
+        }
+    }
     std::size_t n = 0;
     while (n < segments.size() && segments[n].weight > 0.0) {
         ++n;
@@ -82,14 +93,18 @@ double blocked_dot(std::span<const double> a, std::span<const double> b)
     const std::size_t n = a.size();
     const std::size_t blocks = (n + block_size - 1) / block_size;
     std::vector<double> partial(blocks, 0.0);
-    for_each_element(blocks, [&](std::size_t k) {
-        const std::size_t end = std::min(n, (k + 1) * block_size);
+    const auto count = static_cast<std::ptrdiff_t>(blocks);
+    [[maybe_unused]] const bool is_threaded = n >= min_size_for_threads;
+#pragma omp parallel for schedule(static) if (is_threaded)
+    for (std::ptrdiff_t k = 0; k < count; ++k) {
+        const auto first = static_cast<std::size_t>(k) * block_size;
+        const std::size_t end = std::min(n, first + block_size);
         double acc = 0.0;
-        for (std::size_t i = k * block_size; i < end; ++i) {
+        for (std::size_t i = first; i < end; ++i) {
             acc += a[i] * b[i];
         }
-        partial[k] = acc;
-    });
+        partial[static_cast<std::size_t>(k)] = acc;
+    }
     double sum = 0.0;
     for (const double p : partial) {
         sum += p;

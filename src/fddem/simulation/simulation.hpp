@@ -58,7 +58,8 @@ public:
     /// that it can be checkpointed and continued (with a smaller Δt, say).
     StepReport advance();
 
-    /// True when the end time or the step limit is reached, or the flow is steady.
+    /// True when the end time or the step limit is reached, or (not before time.min_end) the
+    /// flow is steady or every free body has settled (time.rest_speed).
     [[nodiscard]] bool is_finished(const StepReport& last) const;
     /// The time from which every free body has been slower than time.rest_speed, if it is now.
     [[nodiscard]] std::optional<double> at_rest_since() const
@@ -261,7 +262,7 @@ private:
     double contact_seconds_ = 0.0;
     double momentum_seconds_ = 0.0;
     double pressure_seconds_ = 0.0;
-    double rest_since_ = -1.0; ///< see at_rest_since(); negative: some body is moving
+    double rest_since_ = -1.0; ///< see at_rest_since() [s]; negative: some body is moving
     PressureUpdate pressure_update_;
     AndersonMixing mixing_; ///< of the outer iterate, reset every step
     std::vector<MixedSegment> iterate_;

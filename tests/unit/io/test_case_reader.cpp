@@ -284,7 +284,7 @@ std::vector<BadCase> bad_cases()
          "time.rest_duration",
          "must be > 0"},
         {"min_end_after_end",
-         replace(v, "end = 1.0\n", "end = 1.0\nmin_end = 2.0\n"),
+         replace(v, "end = 1.0\n", "end = 1.0\nmin_end = 2.0\nsteady_tolerance = 1e-6\n"),
          {},
          f,
          14,
