@@ -9,50 +9,69 @@
 
 #include <algorithm>
 #include <random>
+#include <type_traits>
 
 namespace fddem {
 namespace {
 
+template <class T>
+class NeighbourListTest : public ::testing::Test {
+};
+using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
+TYPED_TEST_SUITE(NeighbourListTest, Dimensions);
+
+template <int Dim>
 struct Wander {
-    std::vector<Vec<2>> centres;
+    std::vector<Vec<Dim>> centres;
     std::vector<double> radii;
 };
 
-Wander random_bodies(int n, unsigned seed)
+/// `n` bodies of radius 0.03-0.06 at random in the box [0, length).
+template <int Dim>
+Wander<Dim> random_bodies(int n, const Vec<Dim>& length, unsigned seed)
 {
     std::mt19937 random(seed);
-    std::uniform_real_distribution<double> x(0.1, 1.9);
-    std::uniform_real_distribution<double> y(0.1, 3.9);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_real_distribution<double> r(0.03, 0.06);
-    Wander w;
+    Wander<Dim> w;
     for (int i = 0; i < n; ++i) {
-        w.centres.emplace_back(x(random), y(random));
+        Vec<Dim> c;
+        for (int d = 0; d < Dim; ++d) {
+            c[d] = 0.1 + (length[d] - 0.2) * unit(random);
+        }
+        w.centres.push_back(c);
         w.radii.push_back(r(random));
     }
     return w;
 }
 
-TEST(NeighbourList, NeverMissesAContactOrANearMissWhileBodiesMove)
+TYPED_TEST(NeighbourListTest, NeverMissesAContactOrANearMissWhileBodiesMove)
 {
+    constexpr int Dim = TypeParam::value;
     const double margin = 0.01;
     const double largest = 0.06;
     const double skin = 0.04;
-    const Vec<2> origin = Vec<2>::Zero();
-    const Vec<2> length(2.0, 4.0);
-    CellList<2> cells(origin, length, 2.0 * largest + margin + skin);
-    NeighbourList<2> list(margin, largest, cells);
+    const Vec<Dim> origin = Vec<Dim>::Zero();
+    Vec<Dim> length = Vec<Dim>::Constant(Dim == 2 ? 2.0 : 0.8);
+    length[1] *= 2.0;
+    CellList<Dim> cells(origin, length, 2.0 * largest + margin + skin);
+    NeighbourList<Dim> list(margin, largest, cells);
     EXPECT_NEAR(list.skin(), skin, 1e-15);
-    list.set_walls(origin, length, {true, true});
+    std::array<bool, Dim> walls{};
+    walls.fill(true);
+    list.set_walls(origin, length, walls);
 
-    Wander w = random_bodies(400, 3);
+    Wander<Dim> w = random_bodies<Dim>(400, length, 3);
     std::mt19937 random(5);
     std::normal_distribution<double> step(0.0, 0.002);
     int refreshes = 0;
     int near_pairs = 0;
     int near_walls = 0;
     for (int s = 0; s < 300; ++s) {
-        for (Vec<2>& c : w.centres) {
-            c += Vec<2>(step(random), step(random));
+        for (Vec<Dim>& c : w.centres) {
+            for (int d = 0; d < Dim; ++d) {
+                c[d] += step(random);
+            }
         }
         list.refresh(w.centres, w.radii, cells);
         ++refreshes;
@@ -68,15 +87,15 @@ TEST(NeighbourList, NeverMissesAContactOrANearMissWhileBodiesMove)
                         << "pair " << i << "-" << j << " at gap " << gap << ", refresh " << s;
                 }
             }
-            for (int d = 0; d < 2; ++d) {
+            for (int d = 0; d < Dim; ++d) {
                 for (int side = 0; side < 2; ++side) {
                     const double gap = side == 0
                                            ? w.centres[i][d] - origin[d] - w.radii[i]
                                            : origin[d] + length[d] - w.centres[i][d] - w.radii[i];
                     if (gap < margin) {
                         ++near_walls;
-                        const auto& walls = list.walls();
-                        ASSERT_TRUE(std::any_of(walls.begin(), walls.end(),
+                        const auto& candidates = list.walls();
+                        ASSERT_TRUE(std::any_of(candidates.begin(), candidates.end(),
                                                 [&](const auto& c) {
                                                     return c.body == static_cast<int>(i) &&
                                                            c.axis == d && c.side == side;
@@ -89,8 +108,8 @@ TEST(NeighbourList, NeverMissesAContactOrANearMissWhileBodiesMove)
     }
     EXPECT_GT(near_pairs, 100); // the test saw contacts and near misses to check
     EXPECT_GT(near_walls, 10);
-    // Each body moves 0.002·√2 per refresh on average: half the skin after about 50 refreshes
-    // for a typical body, sooner for the fastest of 400; far fewer builds than refreshes.
+    // A body moves about 0.002·√Dim per refresh: half the skin after tens of refreshes for a
+    // typical body, sooner for the fastest of 400; far fewer builds than refreshes.
     EXPECT_LT(list.builds(), refreshes / 3);
     EXPECT_GT(list.builds(), 1);
 }
