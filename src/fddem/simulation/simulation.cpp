@@ -81,6 +81,16 @@ double max_speed(const MacGrid<Dim>& grid, const FaceField<Dim>& u)
 
 using Seconds = std::chrono::duration<double>;
 
+/// A residual `value` ≥ 0 [m/s] relative to the velocity scale. A fluid at rest (the scale at
+/// reference_velocity()'s floor) under a force has a residual before it has a velocity: it
+/// then counts as 1, not as value/2.2e-308, which overflowed into a false blow-up (a periodic
+/// channel driven by fluid.body_force = 1000 from rest, Δt = 0.01). Where the residual is
+/// below the scale, as whenever the iterations near convergence, this is value/scale.
+double relative_to(double value, double scale)
+{
+    return value / std::max(scale, value);
+}
+
 /// The outer iteration from which Anderson mixing keeps its history: the first two or three
 /// iterations of a step shrink the change by 0.05–0.6 each and need no help, and a step that
 /// converges in them (most steps of a single body or a dilute suspension) pays nothing for it.
@@ -583,7 +593,7 @@ StepReport Simulation<Dim>::advance_unguarded()
             }
         }
         is_reusable_assembly_ = false;
-        report.momentum_residual = momentum_residual / velocity_scale;
+        report.momentum_residual = relative_to(momentum_residual, velocity_scale);
         report.mass_residual = mass_residual;
         if (!std::isfinite(report.momentum_residual)) {
             throw NumericalError(clock_.step + 1, clock_.time + dt,
@@ -619,7 +629,7 @@ StepReport Simulation<Dim>::advance_unguarded()
             correct_pressure_and_velocity(grid_, bc_, properties_, dt, config_.pressure_relaxation,
                                           pressure_update_, *poisson_, state_);
         pressure_seconds_ += Seconds(std::chrono::steady_clock::now() - start).count();
-        mass_residual = max_divergence * cell / velocity_scale;
+        mass_residual = relative_to(max_divergence * cell, velocity_scale);
 
         // eqs. (13)–(16): rigid-body velocities, marker forces, the correction spread to u.
         if (has_bodies) {
