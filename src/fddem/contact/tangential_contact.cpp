@@ -19,16 +19,6 @@ AngularVec<Dim> rolling_part(const AngularVec<Dim>& omega, const Vec<Dim>& norma
     }
 }
 
-template <int Dim>
-double magnitude(const AngularVec<Dim>& omega)
-{
-    if constexpr (Dim == 2) {
-        return std::abs(omega);
-    } else {
-        return omega.norm();
-    }
-}
-
 } // namespace
 
 template <int Dim>

@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products
 
+#include <cmath>
+
 namespace fddem {
 
 template <int Dim>
@@ -32,6 +34,17 @@ template <int Dim>
         return 0.0;
     } else {
         return Vec<3>::Zero();
+    }
+}
+
+/// |ω|: the magnitude of an angular quantity in either dimension.
+template <int Dim>
+[[nodiscard]] double magnitude(const AngularVec<Dim>& omega)
+{
+    if constexpr (Dim == 2) {
+        return std::abs(omega);
+    } else {
+        return omega.norm();
     }
 }
 

@@ -61,13 +61,7 @@ double forcing_change(std::span<const Vec<Dim>> offsets, std::span<const double>
         force += change;
         moment += cross(offsets[l], change);
     }
-    double spin = 0.0;
-    if constexpr (Dim == 2) {
-        spin = std::abs(moment);
-    } else {
-        spin = moment.norm();
-    }
-    return dt * (force.norm() + 2.0 * spin / radius) / volume;
+    return dt * (force.norm() + 2.0 * magnitude<Dim>(moment) / radius) / volume;
 }
 
 template RigidVelocity<2> rigid_velocity<2>(const RigidUpdateInput<2>&, std::span<const Vec<2>>,

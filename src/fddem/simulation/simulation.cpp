@@ -91,6 +91,13 @@ double relative_to(double value, double scale)
     return value / std::max(scale, value);
 }
 
+/// |U| + |ω| R: the largest speed of a point of a ball of radius R moving with (U, ω) [m/s].
+template <int Dim>
+double rim_speed(const Vec<Dim>& velocity, const AngularVec<Dim>& omega, double radius)
+{
+    return velocity.norm() + magnitude<Dim>(omega) * radius;
+}
+
 /// The outer iteration from which Anderson mixing keeps its history: the first two or three
 /// iterations of a step shrink the change by 0.05–0.6 each and need no help, and a step that
 /// converges in them (most steps of a single body or a dilute suspension) pays nothing for it.
@@ -253,6 +260,20 @@ void Simulation<Dim>::collect_iterate(std::vector<MixedSegment>& segments)
         segments.push_back({state_.u[a].values(), 0.0});
     }
     segments.push_back({state_.p.values(), 0.0});
+}
+
+template <int Dim>
+void Simulation<Dim>::mix_iterate()
+{
+    // The paper iterates eqs. (7)–(16) plainly; fddem replaces this iteration's output by
+    // Anderson's combination of the last outputs, then restores what derives from the mixed
+    // values: λ* = λ (eq. (16) is done) and p's ghosts (u's follow the body-force spread).
+    collect_iterate(iterate_);
+    mixing_.mix(iterate_);
+    for (BodyCoupling<Dim>& c : couplings_) {
+        c.lambda_star = c.lambda;
+    }
+    fill_cell_ghosts(grid_, bc_, state_.p);
 }
 
 template <int Dim>
@@ -574,7 +595,7 @@ StepReport Simulation<Dim>::advance_unguarded()
         const double velocity_scale = reference_velocity();
         if (is_mixed && k >= first_mixed_iteration) {
             collect_iterate(iterate_);
-            mixing_.remember(iterate_); // x_k
+            mixing_.remember(iterate_); // x_k, for the mixing after eqs. (13)–(16)
         }
 
         // eqs. (7)–(8): momentum coefficients about the latest iterate, and its residual.
@@ -651,30 +672,19 @@ StepReport Simulation<Dim>::advance_unguarded()
             rigid_defect = defect / scale;
             body_change = 0.0;
             for (std::size_t b = 0; b < bodies_.size(); ++b) {
-                double spin = 0.0;
-                if constexpr (Dim == 2) {
-                    spin = std::abs(bodies_[b].omega - previous_omega[b]);
-                } else {
-                    spin = (bodies_[b].omega - previous_omega[b]).norm();
-                }
                 // A free body converges on its velocity; a prescribed or fixed one, whose
                 // velocity is given, on the force the fluid puts on it.
-                const double change = bodies_[b].motion == Motion::free
-                                          ? (bodies_[b].velocity - previous_velocity[b]).norm() +
-                                                spin * bodies_[b].shape.radius()
-                                          : couplings_[b].forcing_change;
+                const double change =
+                    bodies_[b].motion == Motion::free
+                        ? rim_speed<Dim>(bodies_[b].velocity - previous_velocity[b],
+                                         bodies_[b].omega - previous_omega[b],
+                                         bodies_[b].shape.radius())
+                        : couplings_[b].forcing_change;
                 body_change = std::max(body_change, change / scale);
             }
             report.body_change = body_change;
             if (is_mixed && k >= first_mixed_iteration) {
-                // Paper deviation: the paper iterates eqs. (7)-(16) plainly; fddem mixes the
-                // whole iterate, G(x_k) → x_{k+1}, by Anderson's method (docs/method.md §4).
-                collect_iterate(iterate_);
-                mixing_.mix(iterate_);
-                for (BodyCoupling<Dim>& c : couplings_) {
-                    c.lambda_star = c.lambda;
-                }
-                fill_cell_ghosts(grid_, bc_, state_.p);
+                mix_iterate(); // Paper deviation (docs/method.md §4): G(x_k) → x_{k+1}
             }
             spread_marker_forces(); // the momentum source of the next iteration: ρf D(λ*)
             fill_velocity_ghosts(grid_, bc_, state_.u);
@@ -720,14 +730,9 @@ void Simulation<Dim>::track_rest()
     }
     const bool is_at_rest =
         std::all_of(bodies_.begin(), bodies_.end(), [&](const RigidBody<Dim>& body) {
-            double spin = 0.0;
-            if constexpr (Dim == 2) {
-                spin = std::abs(body.omega);
-            } else {
-                spin = body.omega.norm();
-            }
             return body.motion != Motion::free ||
-                   body.velocity.norm() + spin * body.shape.radius() < *config_.rest_speed;
+                   rim_speed<Dim>(body.velocity, body.omega, body.shape.radius()) <
+                       *config_.rest_speed;
         });
     if (!is_at_rest) {
         rest_since_ = -1.0;

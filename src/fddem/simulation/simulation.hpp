@@ -230,6 +230,8 @@ private:
     /// The outer iterate as Anderson mixing sees it (docs/method.md §4): the bodies' U and ω
     /// (measured), then λ, u and p (carried along).
     void collect_iterate(std::vector<MixedSegment>& segments);
+    /// After eqs. (13)–(16) of outer iteration k ≥ 3: the iterate becomes Anderson's x_{k+1}.
+    void mix_iterate();
 
     CaseConfig config_;
     MacGrid<Dim> grid_;
