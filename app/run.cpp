@@ -247,8 +247,7 @@ template <int Dim>
 void Run<Dim>::write_particles()
 {
     for (std::size_t k = 0; k < sim_.bodies().size(); ++k) {
-        const RigidBody<Dim>& b = sim_.bodies()[k];
-        const BodyCoupling<Dim>& coupling = sim_.couplings()[k];
+        const Particle<Dim>& b = sim_.bodies()[k];
         std::vector<double> row;
         row.reserve(particle_columns().size());
         row.push_back(sim_.clock().time);
@@ -261,8 +260,8 @@ void Run<Dim>::write_particles()
         }
         if constexpr (Dim == 2) {
             for (const double x :
-                 {b.omega, b.angle, b.force[0], b.force[1], b.torque, coupling.contact_force[0],
-                  coupling.contact_force[1], coupling.contact_torque}) {
+                 {b.omega, b.angle, b.force[0], b.force[1], b.torque, b.contact.mean_force[0],
+                  b.contact.mean_force[1], b.contact.mean_torque}) {
                 row.push_back(x);
             }
         } else {
@@ -276,7 +275,7 @@ void Run<Dim>::write_particles()
                 row.push_back(b.torque[d]);
             }
             for (int d = 0; d < 3; ++d) {
-                row.push_back(coupling.contact_force[d]);
+                row.push_back(b.contact.mean_force[d]);
             }
         }
         particles_->append(row);
@@ -377,7 +376,7 @@ void Run<Dim>::write_fields()
     std::vector<double> radii;
     std::vector<std::array<double, 3>> velocities;
     std::vector<std::array<double, 3>> spins;
-    for (const RigidBody<Dim>& b : sim_.bodies()) {
+    for (const Particle<Dim>& b : sim_.bodies()) {
         std::array<double, 3> x{};
         std::array<double, 3> v{};
         std::array<double, 3> w{};
@@ -455,16 +454,15 @@ void Run<Dim>::write_summary(const std::string& status)
     for (const auto& [name, value] : build_info()) {
         summary.set("build_" + name, value);
     }
-    summary.set_phase_seconds("momentum", sim_.momentum_seconds());
-    summary.set_phase_seconds("pressure", sim_.pressure_seconds());
-    summary.set_phase_seconds("coupling", sim_.coupling_seconds());
-    summary.set_phase_seconds("contact", sim_.contact_seconds());
-    summary.set_phase_seconds("other", stepping - sim_.momentum_seconds() -
-                                           sim_.pressure_seconds() - sim_.coupling_seconds() -
-                                           sim_.contact_seconds());
+    const PhaseTimes& times = sim_.phase_times();
+    for (const Phase phase : {Phase::momentum, Phase::pressure, Phase::coupling, Phase::contact}) {
+        summary.set_phase_seconds(std::string(phase_name(phase)), times[phase]);
+    }
+    summary.set_phase_seconds("other", stepping - times.total());
     if (!config_.bodies.empty()) {
         summary.set("bodies", static_cast<long>(config_.bodies.size()));
-        summary.set("markers_per_body", static_cast<long>(sim_.couplings().front().markers.size()));
+        summary.set("markers_per_body",
+                    static_cast<long>(sim_.bodies().front().coupling.markers.size()));
         summary.set("last_rigid_defect", last.rigid_defect);
         summary.set("contact_model", config_.contact_model);
         summary.set("max_overlap", record_.max_overlap);

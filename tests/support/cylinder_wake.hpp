@@ -29,7 +29,7 @@ struct CylinderWake {
 inline CylinderWake measure_cylinder_wake(const Simulation<2>& sim, double mean_velocity,
                                           double search_length)
 {
-    const RigidBody<2>& body = sim.bodies().front();
+    const Particle<2>& body = sim.bodies().front();
     const double diameter = body.shape.diameter;
     const double radius = 0.5 * diameter;
     const double scale =

@@ -14,22 +14,36 @@ namespace fddem::test {
 /// A free ball (a disk per unit depth in 2D, a sphere in 3D) of radius r [m] and density ρ
 /// [kg/m³], at rest in rotation.
 template <int Dim>
-DemBody<Dim> ball(const Vec<Dim>& centre, const Vec<Dim>& velocity, double radius, double density,
-                  const Material& material = {})
+Particle<Dim> ball(const Vec<Dim>& centre, const Vec<Dim>& velocity, double radius, double density,
+                   const Material& material = {})
 {
-    const Ball<Dim> shape{2.0 * radius};
-    DemBody<Dim> b;
+    Particle<Dim> b;
+    b.shape = Ball<Dim>{2.0 * radius};
+    b.density = density;
     b.centre = centre;
     b.velocity = velocity;
-    b.omega = zero_angular<Dim>();
-    b.radius = radius;
-    b.mass = density * shape.volume();
-    b.inertia = density * shape.second_moment();
-    b.is_mobile = true;
-    b.steady_force = Vec<Dim>::Zero();
-    b.steady_torque = zero_angular<Dim>();
     b.material = material;
     return b;
+}
+
+/// One call of advance_contacts on bodies numbered by their position (as the body store numbers
+/// them), after which each body takes the DEM's end state as its own: the DEM alone, as the
+/// paper's coupling moves a body in contact.
+template <int Dim>
+DemOutcome step_dem(std::vector<Particle<Dim>>& bodies, const DemWalls<Dim>& walls,
+                    const DemSettings& settings, double dt, CellList<Dim>& cells,
+                    ContactHistory<Dim>& history)
+{
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+        bodies[k].id = static_cast<int>(k);
+    }
+    const DemOutcome outcome = advance_contacts<Dim>(bodies, walls, settings, dt, cells, history);
+    for (Particle<Dim>& b : bodies) {
+        b.centre = b.contact.centre;
+        b.velocity = b.contact.velocity;
+        b.omega = b.contact.omega;
+    }
+    return outcome;
 }
 
 /// The box [0, length] with walls across the axes marked in `walled`.
@@ -55,20 +69,20 @@ Vec<Dim> along(int axis, double x, double rest = 0.0)
 /// calls it once per time step), calling `observe(bodies, history)` after each; stops when it
 /// returns false or after `max_steps`. Returns the sub-steps taken.
 template <int Dim, class Observe>
-long run_substeps(std::vector<DemBody<Dim>>& bodies, const DemWalls<Dim>& walls,
+long run_substeps(std::vector<Particle<Dim>>& bodies, const DemWalls<Dim>& walls,
                   const DemSettings& settings, double step, long max_steps,
                   ContactHistory<Dim>& history, Observe observe)
 {
     double largest = 0.0;
-    for (const DemBody<Dim>& b : bodies) {
-        largest = std::max(largest, 2.0 * b.radius);
+    for (const Particle<Dim>& b : bodies) {
+        largest = std::max(largest, 2.0 * b.radius());
     }
     CellList<Dim> cells(walls.origin, walls.length, largest);
     DemSettings one = settings;
     one.substeps = 1;
     long s = 0;
     while (s < max_steps) {
-        (void)advance_contacts<Dim>(bodies, walls, one, step, cells, history);
+        (void)step_dem<Dim>(bodies, walls, one, step, cells, history);
         ++s;
         if (!observe(bodies, history)) {
             break;

@@ -29,7 +29,7 @@ BodyHistory run_and_track(Simulation<Dim>& sim, double rest_speed = 1e-3)
         }
         out.max_relative_overlap = std::max(out.max_relative_overlap, report.max_relative_overlap);
         double fastest = 0.0;
-        for (const RigidBody<Dim>& body : sim.bodies()) {
+        for (const Particle<Dim>& body : sim.bodies()) {
             fastest = std::max(fastest, body.velocity.norm());
         }
         out.max_speed = std::max(out.max_speed, fastest);

@@ -47,7 +47,7 @@ TEST(PaperFig5, DiskFallsAtTheSettlingSpeedLandsAndRests)
 {
     Simulation<2> sim(read_case(paper_case("fig05_disk_in_box"), {}));
     const test::BodyHistory run = test::run_and_track(sim);
-    const RigidBody<2>& body = sim.bodies().front();
+    const Particle<2>& body = sim.bodies().front();
     const double r = body.shape.radius();
     std::printf("max speed %.3f, first contact t = %.3f, rest from t = %.3f, overlap %.2e r, "
                 "rest at (%.5f, %.5f)\n",
@@ -68,7 +68,7 @@ TEST(PaperFigs9To13, EighteenDisksSettleIntoAPileWithSmallOverlaps)
     Simulation<2> sim(read_case(paper_case("fig09_eighteen_disks"), {}));
     const test::BodyHistory run = test::run_and_track(sim);
     double top = 0.0;
-    for (const RigidBody<2>& body : sim.bodies()) {
+    for (const Particle<2>& body : sim.bodies()) {
         const double r = body.shape.radius();
         // Every disk inside the box, none in a wall beyond the contact overlap.
         EXPECT_GT(body.centre[0], 0.98 * r);

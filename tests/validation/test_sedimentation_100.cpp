@@ -22,7 +22,7 @@ TEST(Sedimentation100, SettlesIntoAPileWithoutEscapeOrLargeOverlap)
     Simulation<2> sim(read_case(file, {}));
     const test::BodyHistory run = test::run_and_track(sim, 1e-2);
     double mean_speed = 0.0;
-    for (const RigidBody<2>& body : sim.bodies()) {
+    for (const Particle<2>& body : sim.bodies()) {
         const double r = body.shape.radius();
         EXPECT_GT(body.centre[0], 0.95 * r);
         EXPECT_LT(body.centre[0], 2.0 - 0.95 * r);

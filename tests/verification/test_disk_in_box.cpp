@@ -26,7 +26,7 @@ TEST(DiskInBox, FallsLandsAndComesToRestOnTheFloor)
     config.bodies.front().n_rings = 3;
     Simulation<2> sim(config);
     const test::BodyHistory landing = test::run_and_track(sim);
-    const RigidBody<2>& body = sim.bodies().front();
+    const Particle<2>& body = sim.bodies().front();
     const double r = body.shape.radius();
     std::printf("max speed %.3f, first contact t = %.3f, at rest from t = %.3f, "
                 "max overlap %.2e r, rest at (%.5f, %.5f)\n",
@@ -64,7 +64,7 @@ TEST(DiskInBox, RunStopsOnceTheDiskHasSettled)
     EXPECT_NEAR(sim.clock().time, since + 0.05, 0.5 * config.dt);
     EXPECT_LT(sim.clock().time, 1.2);
     // It stopped because the disk rests on the floor, one radius up.
-    const RigidBody<2>& body = sim.bodies().front();
+    const Particle<2>& body = sim.bodies().front();
     EXPECT_LT(body.velocity.norm() + std::abs(body.omega) * body.shape.radius(), 0.01);
     EXPECT_NEAR(body.centre[1], body.shape.radius(), 0.01 * body.shape.radius());
 }

@@ -57,7 +57,7 @@ Vec<2> momentum(const Simulation<2>& sim)
         p[a] = sum * grid.cell_volume();
     }
     p *= sim.fluid_properties().density;
-    const RigidBody<2>& body = sim.bodies().front();
+    const Particle<2>& body = sim.bodies().front();
     return p + (body.density - sim.fluid_properties().density) * body.volume() * body.velocity;
 }
 
@@ -91,7 +91,7 @@ TEST(Momentum, AClosedBoxTakesItThroughTheWallsTheFluidKeepsNone)
     StepReport report;
     do {
         report = sim.advance();
-        const RigidBody<2>& body = sim.bodies().front();
+        const Particle<2>& body = sim.bodies().front();
         const Vec<2> body_part = (body.density - 1.0) * body.volume() * body.velocity;
         // Incompressible fluid in a rigid closed box: Σ u ΔV = 0 (the divergence theorem with
         // u·n = 0 on the walls, exact on the MAC grid: Σ u ΔV = −Σ x_c (∇·u)_c ΔV, which the

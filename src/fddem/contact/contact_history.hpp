@@ -14,8 +14,9 @@
 
 namespace fddem {
 
-/// Which two things touch: body `first` (an index into the bodies) and `second`, another body's
-/// index (> first) or, if negative, a wall: −1 − (2·axis + side), side 0 the low wall.
+/// Which two things touch: the body of id `first` and `second`, another body's id (the
+/// larger) or, if negative, a wall: −1 − (2·axis + side), side 0 the low wall. Ids are stable
+/// (bodies/particle.hpp), so a spring follows its contact when bodies enter, leave or migrate.
 struct ContactKey {
     int first = 0;
     int second = 0;

@@ -11,16 +11,17 @@
 namespace fddem {
 namespace {
 
+/// The sub-stepped state of a body (ContactState), as the contact geometry needs it.
 template <int Dim>
-BallState<Dim> ball_of(const DemBody<Dim>& b)
+BallState<Dim> ball_of(const Particle<Dim>& b)
 {
-    return {b.centre, b.radius, b.velocity, b.omega};
+    return {b.contact.centre, b.radius(), b.contact.velocity, b.contact.omega};
 }
 
 template <int Dim>
-PairSide side_of(const DemBody<Dim>& b)
+PairSide side_of(const Particle<Dim>& b)
 {
-    return ball_side(b.mass, b.inertia, b.radius, b.material, b.is_mobile);
+    return ball_side(b.mass(), b.inertia(), b.radius(), b.material, b.is_free());
 }
 
 /// Contact forces and torques on every body at the current state, for one contact model; keeps
@@ -28,29 +29,30 @@ PairSide side_of(const DemBody<Dim>& b)
 template <int Dim, class Model>
 class ContactForces {
 public:
-    ContactForces(std::span<const DemBody<Dim>> bodies, const DemWalls<Dim>& walls,
+    ContactForces(std::span<const Particle<Dim>> bodies, const DemWalls<Dim>& walls,
                   const Model& model, ContactHistory<Dim>& history, double margin,
                   const CellList<Dim>& cells)
-        : force(bodies.size()), torque(bodies.size()), walls_(walls), model_(model),
-          history_(history), margin_(margin), neighbours_(margin, largest_radius(bodies), cells)
+        : force(bodies.size()), torque(bodies.size()), has_contact(bodies.size()), walls_(walls),
+          model_(model), history_(history), margin_(margin),
+          neighbours_(margin, largest_radius(bodies), cells)
     {
         neighbours_.set_walls(walls.origin, walls.length, walls.has_walls);
         radii_.reserve(bodies.size());
-        for (const DemBody<Dim>& b : bodies) {
-            radii_.push_back(b.radius);
+        for (const Particle<Dim>& b : bodies) {
+            radii_.push_back(b.radius());
         }
     }
 
     /// Forces at the bodies' state. `step` = Δt_i; the springs stretch by v_t Δt_i only if
     /// `is_new_substep` (not when the state of the last sub-step is merely re-evaluated).
-    void evaluate(std::span<const DemBody<Dim>> bodies, CellList<Dim>& cells, double step,
-                  bool is_new_substep, DemOutcome<Dim>& outcome)
+    void evaluate(std::span<const Particle<Dim>> bodies, CellList<Dim>& cells, double step,
+                  bool is_new_substep, DemOutcome& outcome)
     {
         std::fill(force.begin(), force.end(), Vec<Dim>::Zero());
         std::fill(torque.begin(), torque.end(), zero_angular<Dim>());
         centres_.resize(bodies.size());
         for (std::size_t b = 0; b < bodies.size(); ++b) {
-            centres_[b] = bodies[b].centre;
+            centres_[b] = bodies[b].contact.centre;
         }
         neighbours_.refresh(centres_, radii_, cells);
         previous_.springs.swap(history_.springs);
@@ -61,21 +63,22 @@ public:
         for (const auto& [i, j] : neighbours_.pairs()) {
             const auto a = static_cast<std::size_t>(i);
             const auto b = static_cast<std::size_t>(j);
-            if (!bodies[a].is_mobile && !bodies[b].is_mobile) {
+            if (!bodies[a].is_free() && !bodies[b].is_free()) {
                 continue; // neither can move: nothing to resolve
             }
             const ContactGeometry<Dim> g =
                 ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]));
             if (g.overlap <= 0.0) {
-                mark_if_near(g.overlap, a, b, outcome);
+                mark_if_near(g.overlap, a, b);
                 continue;
             }
-            apply(g, a, b, {i, j}, make_contact_pair(side_of(bodies[a]), side_of(bodies[b])),
-                  std::min(bodies[a].radius, bodies[b].radius), outcome);
+            apply(g, a, b, {bodies[a].id, bodies[b].id},
+                  make_contact_pair(side_of(bodies[a]), side_of(bodies[b])),
+                  std::min(bodies[a].radius(), bodies[b].radius()), outcome);
         }
         for (const auto& [body, d, side] : neighbours_.walls()) {
             const auto a = static_cast<std::size_t>(body);
-            if (!bodies[a].is_mobile) {
+            if (!bodies[a].is_free()) {
                 continue;
             }
             const auto axis = static_cast<std::size_t>(d);
@@ -83,11 +86,11 @@ public:
             const ContactGeometry<Dim> g =
                 ball_wall_contact(ball_of(bodies[a]), d, side, at,
                                   walls_.velocity[axis][static_cast<std::size_t>(side)]);
-            mark_if_near(g.overlap, a, bodies.size(), outcome);
+            mark_if_near(g.overlap, a, bodies.size());
             if (g.overlap > 0.0) {
-                apply(g, a, bodies.size(), wall_contact_key(body, d, side),
+                apply(g, a, bodies.size(), wall_contact_key(bodies[a].id, d, side),
                       make_contact_pair(side_of(bodies[a]), wall_side(walls_.material)),
-                      bodies[a].radius, outcome);
+                      bodies[a].radius(), outcome);
             }
         }
         std::sort(history_.springs.begin(), history_.springs.end(),
@@ -96,19 +99,23 @@ public:
 
     std::vector<Vec<Dim>> force;
     std::vector<AngularVec<Dim>> torque;
+    std::vector<char> has_contact; ///< touched (or came within the margin) during the step
     int in_contact = 0;
 
 private:
     /// A pair apart by less than the margin counts as in contact (DemSettings::margin) but
     /// exerts no force; `second` = n is a wall.
-    void mark_if_near(double overlap, std::size_t first, std::size_t second,
-                      DemOutcome<Dim>& outcome) const
+    void mark_if_near(double overlap, std::size_t first, std::size_t second)
     {
         if (overlap > -margin_) {
-            outcome.has_contact[first] = true;
-            if (second < force.size()) {
-                outcome.has_contact[second] = true;
-            }
+            mark(first, second);
+        }
+    }
+    void mark(std::size_t first, std::size_t second)
+    {
+        has_contact[first] = 1;
+        if (second < force.size()) {
+            has_contact[second] = 1;
         }
     }
 
@@ -116,7 +123,7 @@ private:
     /// bodies; `second` = n is a wall.
     void apply(const ContactGeometry<Dim>& g, std::size_t first, std::size_t second,
                const ContactKey& key, const ContactPair& pair, double smaller_radius,
-               DemOutcome<Dim>& outcome)
+               DemOutcome& outcome)
     {
         const ContactLaw law = model_.law({g.overlap, g.overlap_rate}, pair);
         Vec<Dim> on_second = law.normal_force * g.normal;
@@ -141,10 +148,7 @@ private:
         outcome.max_overlap = std::max(outcome.max_overlap, g.overlap);
         outcome.max_relative_overlap =
             std::max(outcome.max_relative_overlap, g.overlap / smaller_radius);
-        outcome.has_contact[first] = true;
-        if (second < force.size()) {
-            outcome.has_contact[second] = true;
-        }
+        mark(first, second);
         ++in_contact;
     }
 
@@ -159,53 +163,63 @@ private:
     std::vector<double> radii_;
     NeighbourList<Dim> neighbours_; ///< candidates for this step's sub-steps
 
-    static double largest_radius(std::span<const DemBody<Dim>> bodies)
+    static double largest_radius(std::span<const Particle<Dim>> bodies)
     {
         double largest = 0.0;
-        for (const DemBody<Dim>& b : bodies) {
-            largest = std::max(largest, b.radius);
+        for (const Particle<Dim>& b : bodies) {
+            largest = std::max(largest, b.radius());
         }
         return largest;
     }
 };
 
 template <int Dim, class Model>
-DemOutcome<Dim> advance_with(const Model& model, std::span<DemBody<Dim>> bodies,
-                             const DemWalls<Dim>& walls, const DemSettings& settings, double dt,
-                             CellList<Dim>& cells, ContactHistory<Dim>& history)
+DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
+                        const DemWalls<Dim>& walls, const DemSettings& settings, double dt,
+                        CellList<Dim>& cells, ContactHistory<Dim>& history)
 {
     const std::size_t n = bodies.size();
-    DemOutcome<Dim> outcome;
-    outcome.mean_force.assign(n, Vec<Dim>::Zero());
-    outcome.mean_torque.assign(n, zero_angular<Dim>());
-    outcome.has_contact.assign(n, false);
+    DemOutcome outcome;
+    for (Particle<Dim>& body : bodies) {
+        ContactState<Dim>& c = body.contact;
+        c.centre = body.centre;
+        c.velocity = body.velocity;
+        c.omega = body.omega;
+        c.mean_force = Vec<Dim>::Zero();
+        c.mean_torque = zero_angular<Dim>();
+    }
     const double step = dt / settings.substeps;
     const double half = 0.5 * step;
     const double weight = 1.0 / settings.substeps; // each sub-step's share of the mean
     ContactForces<Dim, Model> contacts(bodies, walls, model, history, settings.margin, cells);
     contacts.evaluate(bodies, cells, step, false, outcome);
     const auto kick = [&](std::size_t b) {
-        DemBody<Dim>& body = bodies[b];
-        outcome.mean_force[b] += 0.5 * weight * contacts.force[b];
-        outcome.mean_torque[b] += 0.5 * weight * contacts.torque[b];
-        body.velocity = half_kick(body.velocity, Vec<Dim>(contacts.force[b] + body.steady_force),
-                                  body.mass, settings.beta, half);
-        body.omega = half_kick(body.omega, AngularVec<Dim>(contacts.torque[b] + body.steady_torque),
-                               body.inertia, settings.beta, half);
+        const Particle<Dim>& body = bodies[b];
+        ContactState<Dim>& c = bodies[b].contact;
+        c.mean_force += 0.5 * weight * contacts.force[b];
+        c.mean_torque += 0.5 * weight * contacts.torque[b];
+        c.velocity = half_kick(c.velocity, Vec<Dim>(contacts.force[b] + c.steady_force),
+                               body.mass(), settings.beta, half);
+        c.omega = half_kick(c.omega, AngularVec<Dim>(contacts.torque[b] + c.steady_torque),
+                            body.inertia(), settings.beta, half);
     };
     for (int s = 0; s < settings.substeps; ++s) {
         for (std::size_t b = 0; b < n; ++b) {
-            if (bodies[b].is_mobile) {
+            if (bodies[b].is_free()) {
                 kick(b);
             }
-            bodies[b].centre = drift<Dim>(bodies[b].centre, bodies[b].velocity, step);
+            ContactState<Dim>& c = bodies[b].contact;
+            c.centre = drift<Dim>(c.centre, c.velocity, step);
         }
         contacts.evaluate(bodies, cells, step, true, outcome);
         for (std::size_t b = 0; b < n; ++b) {
-            if (bodies[b].is_mobile) {
+            if (bodies[b].is_free()) {
                 kick(b);
             }
         }
+    }
+    for (std::size_t b = 0; b < n; ++b) {
+        bodies[b].contact.is_in_contact = contacts.has_contact[b] != 0;
     }
     outcome.n_contacts = contacts.in_contact;
     return outcome;
@@ -214,9 +228,9 @@ DemOutcome<Dim> advance_with(const Model& model, std::span<DemBody<Dim>> bodies,
 } // namespace
 
 template <int Dim>
-DemOutcome<Dim> advance_contacts(std::span<DemBody<Dim>> bodies, const DemWalls<Dim>& walls,
-                                 const DemSettings& settings, double dt, CellList<Dim>& cells,
-                                 ContactHistory<Dim>& history)
+DemOutcome advance_contacts(std::span<Particle<Dim>> bodies, const DemWalls<Dim>& walls,
+                            const DemSettings& settings, double dt, CellList<Dim>& cells,
+                            ContactHistory<Dim>& history)
 {
     return std::visit(
         [&](const auto& model) {
@@ -225,11 +239,11 @@ DemOutcome<Dim> advance_contacts(std::span<DemBody<Dim>> bodies, const DemWalls<
         settings.model);
 }
 
-template DemOutcome<2> advance_contacts<2>(std::span<DemBody<2>>, const DemWalls<2>&,
-                                           const DemSettings&, double, CellList<2>&,
-                                           ContactHistory<2>&);
-template DemOutcome<3> advance_contacts<3>(std::span<DemBody<3>>, const DemWalls<3>&,
-                                           const DemSettings&, double, CellList<3>&,
-                                           ContactHistory<3>&);
+template DemOutcome advance_contacts<2>(std::span<Particle<2>>, const DemWalls<2>&,
+                                        const DemSettings&, double, CellList<2>&,
+                                        ContactHistory<2>&);
+template DemOutcome advance_contacts<3>(std::span<Particle<3>>, const DemWalls<3>&,
+                                        const DemSettings&, double, CellList<3>&,
+                                        ContactHistory<3>&);
 
 } // namespace fddem

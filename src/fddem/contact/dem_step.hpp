@@ -12,6 +12,7 @@
 /// for a body in contact ("paper", §2.3: "When the collision happens, the DEM is used in place
 /// of (13) and (14)").
 
+#include "fddem/bodies/particle.hpp"
 #include "fddem/contact/cell_list.hpp"
 #include "fddem/contact/contact_history.hpp"
 #include "fddem/contact/contact_models.hpp"
@@ -23,21 +24,6 @@
 #include <vector>
 
 namespace fddem {
-
-/// One body as the DEM sees it.
-template <int Dim>
-struct DemBody {
-    Vec<Dim> centre;
-    Vec<Dim> velocity;
-    AngularVec<Dim> omega;
-    double radius;
-    double mass;           ///< [kg] (2D: per unit depth)
-    double inertia;        ///< [kg·m²]
-    bool is_mobile = true; ///< false: fixed or prescribed (moves at its velocity, unaffected)
-    Vec<Dim> steady_force; ///< held over the step: weight, hydrodynamic force [N]
-    AngularVec<Dim> steady_torque; ///< [N·m]
-    Material material{};           ///< its surface (friction, and E, ν, e for Hertz–Mindlin)
-};
 
 /// The box walls a body can hit: the non-periodic axes of [origin, origin + length].
 template <int Dim>
@@ -69,26 +55,26 @@ struct DemSettings {
     double margin = 0.0;
 };
 
-/// What the contacts did to each body over the step.
-template <int Dim>
+/// What the contacts did over the step, beyond what each body's record holds.
 struct DemOutcome {
-    std::vector<Vec<Dim>> mean_force;         ///< contact impulse / Δt [N]
-    std::vector<AngularVec<Dim>> mean_torque; ///< [N·m]
-    std::vector<bool> has_contact;            ///< touched something during the step
-    double max_overlap = 0.0;                 ///< largest α seen in any sub-step [m]
-    double max_relative_overlap = 0.0;        ///< largest α / r of the smaller body
-    int n_contacts = 0;                       ///< contacts at the end of the step
+    double max_overlap = 0.0;          ///< largest α seen in any sub-step [m]
+    double max_relative_overlap = 0.0; ///< largest α / r of the smaller body
+    int n_contacts = 0;                ///< contacts at the end of the step
 };
 
-/// Advances `bodies` (centre, velocity, omega) through settings.substeps sub-steps of dt (one
-/// time step). `cells` must reach at least 2 r_max + settings.margin; what it reaches beyond
-/// is the skin of the sub-steps' neighbour list (contact/neighbour_list.hpp: none, and the list
-/// is rebuilt at every sub-step, if it reaches no further). `history` holds the tangential springs
-/// of the open contacts, body indices being positions in `bodies`; on return it holds those open at
-/// the end of the step.
+/// Advances every body of `bodies` through settings.substeps sub-steps of dt (one time step),
+/// in place in its record's contact part (bodies/particle.hpp): from its state (centre, velocity,
+/// omega) to contact.centre, contact.velocity, contact.omega, under the contact forces and
+/// contact.steady_force and steady_torque, held over the step; writes contact.mean_force,
+/// mean_torque and is_in_contact. The body's own state is left as it was. A fixed or prescribed
+/// body moves at its velocity, unaffected. `cells` must reach at least 2 r_max +
+/// settings.margin; what it reaches beyond is the skin of the sub-steps' neighbour list
+/// (contact/neighbour_list.hpp: none, and the list is rebuilt at every sub-step, if it reaches no
+/// further). `history` holds the tangential springs of the open contacts, keyed by the bodies'
+/// ids; on return it holds those open at the end of the step.
 template <int Dim>
-DemOutcome<Dim> advance_contacts(std::span<DemBody<Dim>> bodies, const DemWalls<Dim>& walls,
-                                 const DemSettings& settings, double dt, CellList<Dim>& cells,
-                                 ContactHistory<Dim>& history);
+DemOutcome advance_contacts(std::span<Particle<Dim>> bodies, const DemWalls<Dim>& walls,
+                            const DemSettings& settings, double dt, CellList<Dim>& cells,
+                            ContactHistory<Dim>& history);
 
 } // namespace fddem

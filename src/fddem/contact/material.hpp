@@ -14,15 +14,9 @@
 ///     it is symmetric, returns the common value for equal materials, and a frictionless
 ///     (μ = 0) or perfectly plastic surface makes the pair so, whatever the other surface.
 
-namespace fddem {
+#include "fddem/bodies/material.hpp"
 
-struct Material {
-    double young_modulus = 0.0;    ///< E [Pa] (2D: see docs/method.md); 0: not given
-    double poisson_ratio = 0.0;    ///< ν
-    double friction = 0.0;         ///< sliding friction coefficient μ_s
-    double rolling_friction = 0.0; ///< rolling friction coefficient μ_r
-    double restitution = 1.0;      ///< normal restitution coefficient e
-};
+namespace fddem {
 
 /// One side of a contact as the pair rules need it. Inverse quantities, so that a wall or an
 /// immovable body is exactly 0 and no infinity enters the arithmetic.

@@ -10,19 +10,6 @@
 namespace fddem {
 
 template <int Dim>
-double MarkerSet<Dim>::second_moment() const
-{
-    double sum = 0.0;
-    for (std::size_t l = 0; l < offsets.size(); ++l) {
-        sum += volumes[l] * offsets[l].squaredNorm();
-    }
-    if constexpr (Dim == 3) {
-        sum *= 2.0 / 3.0; // about one axis: ∫ |r⊥|² = ⅔ ∫ |r|² for an isotropic set
-    }
-    return sum;
-}
-
-template <int Dim>
 MarkerSet<Dim> make_ball_markers(const Ball<Dim>& ball, int n_rings)
 {
     if (n_rings < 1) {
@@ -68,8 +55,6 @@ int rings_for_spacing(double radius, double grid_spacing, double ratio)
     return std::max(1, static_cast<int>(std::lround(radius / (ratio * grid_spacing) - 0.5)));
 }
 
-template struct MarkerSet<2>;
-template struct MarkerSet<3>;
 template MarkerSet<2> make_ball_markers<2>(const Ball<2>&, int);
 template MarkerSet<3> make_ball_markers<3>(const Ball<3>&, int);
 

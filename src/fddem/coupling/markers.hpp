@@ -12,21 +12,11 @@
 /// volume equally.
 
 #include "fddem/bodies/ball.hpp"
+#include "fddem/bodies/marker_set.hpp"
 
 #include <vector>
 
 namespace fddem {
-
-template <int Dim>
-struct MarkerSet {
-    std::vector<Vec<Dim>> offsets; ///< from the body centre, body frame [m]
-    std::vector<double> volumes;   ///< ΔV_l [m³] (2D: m²), Σ = body volume
-    double spacing = 0.0;          ///< h_L [m]
-
-    [[nodiscard]] std::size_t size() const noexcept { return offsets.size(); }
-    /// Σ ΔV_l |r_l|²: the markers' second moment, the fluid inertia they represent / ρf.
-    [[nodiscard]] double second_moment() const;
-};
 
 /// Markers for a ball with `n_rings` rings (2D) or shells (3D); n_rings ≥ 1.
 template <int Dim>

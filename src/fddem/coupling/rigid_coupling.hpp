@@ -15,7 +15,7 @@
 /// hydrodynamic force for output: F_H = ρs V (U^{n+1} − U^n)/Δt − (ρs − ρf) V g − F_e.
 /// F_e, M_e: other forces on the body (contacts, "additive" coupling); zero in the paper.
 
-#include "fddem/bodies/rigid_body.hpp"
+#include "fddem/bodies/particle.hpp"
 
 #include <span>
 

@@ -31,13 +31,13 @@ namespace {
 /// it resolve at compile time and the row loop can vectorise.
 template <int Dim, int axis>
 double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                          const FluidProperties& fluid, const MomentumSettings& settings,
+                          const FluidProperties& fluid, const MomentumSettings& settings, double dt,
                           const FluidState<Dim>& state, MomentumSystem<Dim>& system)
 {
     const Box<Dim> box = unknown_faces(grid, bc, axis);
     const double volume = grid.cell_volume();
     const double rho = fluid.density;
-    const double a_time = rho * volume / settings.dt;
+    const double a_time = rho * volume / dt;
     const double gamma = settings.convection == ConvectionScheme::central ? 1.0 : 0.0;
     const double* ua = state.u[axis].data();
     const double* ua_n = state.u_n[axis].data();
@@ -220,18 +220,18 @@ double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
 
 template <int Dim>
 double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                         const FluidProperties& fluid, const MomentumSettings& settings,
+                         const FluidProperties& fluid, const MomentumSettings& settings, double dt,
                          const FluidState<Dim>& state, int axis, MomentumSystem<Dim>& system)
 {
     if (axis == 0) {
-        return assemble_component<Dim, 0>(grid, bc, fluid, settings, state, system);
+        return assemble_component<Dim, 0>(grid, bc, fluid, settings, dt, state, system);
     }
     if constexpr (Dim == 3) {
         if (axis == 2) {
-            return assemble_component<Dim, 2>(grid, bc, fluid, settings, state, system);
+            return assemble_component<Dim, 2>(grid, bc, fluid, settings, dt, state, system);
         }
     }
-    return assemble_component<Dim, 1>(grid, bc, fluid, settings, state, system);
+    return assemble_component<Dim, 1>(grid, bc, fluid, settings, dt, state, system);
 }
 
 namespace {
@@ -478,10 +478,10 @@ int momentum_cycles_for(const std::string& solver, int cycles, double time_share
 template double time_term_share<2>(const MacGrid<2>&, const FluidProperties&, double);
 template double time_term_share<3>(const MacGrid<3>&, const FluidProperties&, double);
 template double assemble_momentum<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
-                                     const FluidProperties&, const MomentumSettings&,
+                                     const FluidProperties&, const MomentumSettings&, double,
                                      const FluidState<2>&, int, MomentumSystem<2>&);
 template double assemble_momentum<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
-                                     const FluidProperties&, const MomentumSettings&,
+                                     const FluidProperties&, const MomentumSettings&, double,
                                      const FluidState<3>&, int, MomentumSystem<3>&);
 template void solve_momentum<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
                                 const MomentumSettings&, MomentumSystem<2>&, int, FluidState<2>&);

@@ -40,7 +40,6 @@ struct MomentumSystem {
 };
 
 struct MomentumSettings {
-    double dt;                   ///< Δt [s]
     ConvectionScheme convection; ///< see ConvectionScheme
     double relaxation;           ///< α_u in (0, 1]
     int sweeps;                  ///< red-black Gauss–Seidel sweeps per outer iteration, at most
@@ -67,11 +66,12 @@ inline constexpr double multigrid_time_share = 0.2;
 
 /// Assembles eqs. (7)–(8) for component `axis` about the current iterate `state.u` (Picard:
 /// fluxes from the latest iterate), implicit Euler in time. Requires the ghosts of state.u
-/// filled. Returns the normalised residual of the current iterate, max |r / a_P| [m/s].
+/// filled. `dt` is Δt [s]. Returns the normalised residual of the current iterate,
+/// max |r / a_P| [m/s].
 template <int Dim>
 [[nodiscard]] double
 assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                  const FluidProperties& fluid, const MomentumSettings& settings,
+                  const FluidProperties& fluid, const MomentumSettings& settings, double dt,
                   const FluidState<Dim>& state, int axis, MomentumSystem<Dim>& system);
 
 /// Relaxes component `axis` of state.u towards the solution of its system, with velocity

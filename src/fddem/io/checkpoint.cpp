@@ -83,8 +83,8 @@ CheckpointLayout checkpoint_layout(const Simulation<Dim>& sim)
         periodic.emplace_back(is_periodic ? "true" : "false");
     }
     std::vector<std::size_t> markers;
-    for (const BodyCoupling<Dim>& c : sim.couplings()) {
-        markers.push_back(c.markers.size());
+    for (const Particle<Dim>& body : sim.bodies()) {
+        markers.push_back(body.coupling.markers.size());
     }
     return {
         {"dimension", std::to_string(Dim)},       {"domain.origin", list_text(origin)},

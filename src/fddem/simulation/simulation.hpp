@@ -2,42 +2,21 @@
 #pragma once
 /// Simulation<Dim> owns everything of one run and advances it one time step at a time.
 
-#include "fddem/bodies/rigid_body.hpp"
+#include "fddem/bodies/particles.hpp"
 #include "fddem/contact/dem_step.hpp"
-#include "fddem/core/logger.hpp"
-#include "fddem/coupling/body_coupling.hpp"
+#include "fddem/core/phase_timer.hpp"
 #include "fddem/coupling/delta_kernel.hpp"
 #include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/fluid/fluid_state.hpp"
-#include "fddem/fluid/momentum.hpp"
-#include "fddem/fluid/pressure_correction.hpp"
 #include "fddem/grid/mac_grid.hpp"
-#include "fddem/linsolve/anderson_mixing.hpp"
-#include "fddem/linsolve/poisson_solver.hpp"
 #include "fddem/simulation/case_config.hpp"
+#include "fddem/simulation/outer_iterations.hpp"
+#include "fddem/simulation/step_report.hpp"
 
-#include <memory>
 #include <optional>
-#include <span>
 #include <string>
-#include <vector>
 
 namespace fddem {
-
-/// What one time step did.
-struct StepReport {
-    int outer_iterations = 0;
-    bool is_converged = false;      ///< residuals below tolerance within the iteration limit
-    double mass_residual = 0.0;     ///< max |∇·u*| h / U_ref of the last outer iteration
-    double momentum_residual = 0.0; ///< max |r/a_P| / U_ref of the accepted iterate
-    double courant = 0.0;           ///< max_d max |u_d| Δt / h_d after the step
-    double rate_of_change = 0.0;    ///< max |u^{n+1} − u^n| / Δt · L / U_ref² (steady check)
-    double rigid_defect = 0.0; ///< max |U + ω×r − I(u)| / U_ref over markers, last iteration
-    double body_change = 0.0;  ///< max (|ΔU| + R|Δω|) / U_ref over bodies, last iteration
-    double max_overlap = 0.0;  ///< largest contact overlap α in the DEM sub-steps [m]
-    double max_relative_overlap = 0.0; ///< largest α / radius (of the smaller body)
-    int contacts = 0;                  ///< contacts at the end of the DEM sub-steps
-};
 
 /// Time and step counters.
 struct Clock {
@@ -46,17 +25,36 @@ struct Clock {
     double dt = 0.0; ///< [s]
 };
 
+/// The contacts of a run with free bodies and a contact model (eq. (18)).
+template <int Dim>
+struct ContactSetup {
+    DemSettings settings;
+    bool is_paper_coupling = false; ///< contact.coupling = "paper"
+    CellList<Dim> cells;            ///< the broad phase of the DEM's neighbour list
+    DemWalls<Dim> walls;
+};
+
 template <int Dim>
 class Simulation {
 public:
     /// Builds the run from a checked case. Throws InputError if the case's dimension is not Dim.
     explicit Simulation(const CaseConfig& config);
+    // Its stages hold references to its members.
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+    Simulation(Simulation&&) = delete;
+    Simulation& operator=(Simulation&&) = delete;
+    ~Simulation() = default;
 
-    /// One implicit-Euler time step: SIMPLE outer iterations (7)–(12) to convergence.
-    /// Throws NumericalError if the step blows up (a non-finite residual, a body leaving the
-    /// box); the simulation is then back in the state it had before the step, exactly, so
-    /// that it can be checkpointed and continued (with a smaller Δt, say).
+    /// One implicit-Euler time step: DEM sub-steps (18), SIMPLE outer iterations (7)–(16) to
+    /// convergence, the move (17). Throws NumericalError if the step blows up (a non-finite
+    /// residual, a body leaving the box); the simulation is then back in the state it had before
+    /// the step, exactly, so that it can be checkpointed and continued (with a smaller Δt, say).
     StepReport advance();
+
+    /// The one place Δt [s] is set: adopts it for the next step, with everything derived from
+    /// it (the momentum multigrid's cycles; a reused momentum assembly is dropped).
+    void set_time_step(double dt);
 
     /// True when the end time or the step limit is reached, or (not before time.min_end) the
     /// flow is steady or every free body has settled (time.rest_speed).
@@ -77,37 +75,32 @@ public:
     /// call invalidate_assembly() after changing anything between steps.
     [[nodiscard]] FluidState<Dim>& fluid() noexcept
     {
-        is_reusable_assembly_ = false;
+        outer_.is_reusable_assembly() = false;
         return state_;
     }
     /// Forces a full momentum assembly at the start of the next step.
-    void invalidate_assembly() noexcept { is_reusable_assembly_ = false; }
+    void invalidate_assembly() noexcept { outer_.is_reusable_assembly() = false; }
     [[nodiscard]] const FluidProperties& fluid_properties() const noexcept { return properties_; }
     [[nodiscard]] const Clock& clock() const noexcept { return clock_; }
-    [[nodiscard]] const std::vector<RigidBody<Dim>>& bodies() const noexcept { return bodies_; }
-    [[nodiscard]] std::vector<RigidBody<Dim>>& bodies() noexcept { return bodies_; }
-    [[nodiscard]] const std::vector<BodyCoupling<Dim>>& couplings() const noexcept
-    {
-        return couplings_;
-    }
-    /// Seconds spent so far in the fictitious-domain coupling (eqs. (13)–(16)).
-    [[nodiscard]] double coupling_seconds() const noexcept { return coupling_seconds_; }
-    /// Seconds spent so far in the DEM sub-steps (eq. (18)).
-    [[nodiscard]] double contact_seconds() const noexcept { return contact_seconds_; }
+    /// The bodies, one record each (bodies/particle.hpp), in the order of their ids.
+    [[nodiscard]] const Particles<Dim>& bodies() const noexcept { return bodies_; }
+    [[nodiscard]] Particles<Dim>& bodies() noexcept { return bodies_; }
+    /// Seconds spent so far in each phase of the steps (summary.json).
+    [[nodiscard]] const PhaseTimes& phase_times() const noexcept { return times_; }
     [[nodiscard]] const CaseConfig& config() const noexcept { return config_; }
     /// The persistent contact state (tangential springs of the open contacts).
     [[nodiscard]] const ContactHistory<Dim>& contact_history() const noexcept
     {
         return contact_history_;
     }
-    [[nodiscard]] const PoissonSolver<Dim>& pressure_solver() const noexcept { return *poisson_; }
+    [[nodiscard]] const PoissonSolver<Dim>& pressure_solver() const noexcept
+    {
+        return outer_.pressure_solver();
+    }
     [[nodiscard]] const MomentumSettings& momentum_settings() const noexcept
     {
-        return momentum_settings_;
+        return outer_.momentum_settings();
     }
-    /// Seconds spent so far in the momentum and pressure stages.
-    [[nodiscard]] double momentum_seconds() const noexcept { return momentum_seconds_; }
-    [[nodiscard]] double pressure_seconds() const noexcept { return pressure_seconds_; }
 
     /// Sets a uniform force per unit volume on the fluid [N/m³] (e.g. to drive a channel).
     void set_uniform_body_force(const Vec<Dim>& force);
@@ -135,7 +128,7 @@ private:
     /// bump in io/checkpoint.hpp). Work arrays that a step rewrites before reading them are
     /// included where cheap, so that no stale value can make a continued run differ. Not here:
     /// what the constructor rebuilds from the case (grid, markers in the body frame, solvers,
-    /// DEM settings) and per-step scratch (dem_bodies_, the cell list).
+    /// DEM settings) and per-step scratch (the cell list).
     template <class Self, class Archive>
     static void visit_state(Self& self, Archive& archive)
     {
@@ -150,8 +143,9 @@ private:
         archive("fluid.divergence", self.state_.divergence);
         archive("fluid.previous_level", self.previous_level_);
         archive("uniform_force", self.uniform_force_);
-        archive("is_reusable_assembly", self.is_reusable_assembly_);
-        for (auto& system : self.systems_) {
+        auto& outer = self.outer_;
+        archive("is_reusable_assembly", outer.is_reusable_assembly());
+        for (auto& system : outer.systems()) {
             archive("momentum.a_p", system.a_p);
             archive("momentum.a_nb", system.a_nb);
             archive("momentum.b", system.b);
@@ -160,114 +154,93 @@ private:
         std::size_t n_bodies = self.bodies_.size();
         archive("bodies", n_bodies);
         check_body_count(n_bodies, self.bodies_.size());
-        for (std::size_t b = 0; b < self.bodies_.size(); ++b) {
-            auto& body = self.bodies_[b];
+        for (auto& body : self.bodies_) {
             archive("body.centre", body.centre);
             archive("body.angle", body.angle);
             archive("body.velocity", body.velocity);
             archive("body.omega", body.omega);
             archive("body.force", body.force);
             archive("body.torque", body.torque);
-            auto& c = self.couplings_[b];
+            auto& c = body.coupling;
             archive("coupling.offsets", c.offsets);
             archive("coupling.positions", c.positions);
             archive("coupling.fluid", c.fluid);
             archive("coupling.lambda", c.lambda);
             archive("coupling.lambda_star", c.lambda_star);
-            archive("coupling.velocity_n", c.velocity_n);
-            archive("coupling.omega_n", c.omega_n);
-            archive("contact.force", c.contact_force);
-            archive("contact.torque", c.contact_torque);
-            archive("contact.is_in_contact", c.is_in_contact);
-            archive("contact.dem_centre", c.dem_centre);
-            archive("contact.dem_velocity", c.dem_velocity);
-            archive("contact.dem_omega", c.dem_omega);
+            archive("coupling.velocity_n", body.velocity_n);
+            archive("coupling.omega_n", body.omega_n);
+            auto& dem = body.contact;
+            archive("contact.force", dem.mean_force);
+            archive("contact.torque", dem.mean_torque);
+            archive("contact.is_in_contact", dem.is_in_contact);
+            archive("contact.dem_centre", dem.centre);
+            archive("contact.dem_velocity", dem.velocity);
+            archive("contact.dem_omega", dem.omega);
         }
         archive("contact.tangential_springs", self.contact_history_.springs);
         archive("rest_since", self.rest_since_);
-        archive("seconds.coupling", self.coupling_seconds_);
-        archive("seconds.contact", self.contact_seconds_);
-        archive("seconds.momentum", self.momentum_seconds_);
-        archive("seconds.pressure", self.pressure_seconds_);
+        archive("seconds.coupling", self.times_.seconds[static_cast<std::size_t>(Phase::coupling)]);
+        archive("seconds.contact", self.times_.seconds[static_cast<std::size_t>(Phase::contact)]);
+        archive("seconds.momentum", self.times_.seconds[static_cast<std::size_t>(Phase::momentum)]);
+        archive("seconds.pressure", self.times_.seconds[static_cast<std::size_t>(Phase::pressure)]);
         if constexpr (Archive::is_reading) {
             std::string plans;
             archive("pressure.plans", plans);
-            self.poisson_->restore_plans(plans);
+            outer.pressure_solver().restore_plans(plans);
         } else {
-            archive("pressure.plans", self.poisson_->plan_record());
+            archive("pressure.plans", outer.pressure_solver().plan_record());
         }
     }
     static void check_body_count(std::size_t stored, std::size_t bodies);
     /// After load_state: the marker arrays fit the markers; the case's Δt is adopted.
     void finish_load();
 
-    /// What a failed step must be able to give back (roll_back_step). u^n and u^{n−1} are
-    /// not here: the step keeps them in state_.u_n and previous_level_ anyway.
-    struct StepStart {
-        GridArray<Dim> p;
-        std::vector<RigidBody<Dim>> bodies;
-        std::vector<BodyCoupling<Dim>> couplings;
-        ContactHistory<Dim> contacts;
-    };
+    // The stages of advance(), in its order.
     StepReport advance_unguarded();
+    /// Keeps the level-n state: u^{n−1} ← u^n ← u, U^n ← U, ω^n ← ω (λ* = λ^n already).
+    void begin_step();
+    /// eq. (18): the DEM sub-steps over the whole step, from the level-n state, with the
+    /// buoyant weight held over them.
+    void resolve_contacts(StepReport& report);
+    /// The Courant number and rate of change of the step just iterated.
+    void measure_step(StepReport& report) const;
+    /// eq. (17) and what follows from it: hydrodynamic forces for output, the bodies moved,
+    /// their markers placed and the body force spread for the next step.
+    void move_bodies_and_markers();
+    /// Tracks rest_since_ after a step (time.rest_speed).
+    void track_rest();
+
     /// Undoes a step that threw: the state of the step's start (except per-step scratch and
     /// u^{n−2}, which only a reused assembly needs; the next step reassembles).
     void roll_back_step();
-    /// Where the velocity first stops being finite, for the blow-up message.
-    [[nodiscard]] std::string locate_non_finite_velocity() const;
-
-    [[nodiscard]] double reference_velocity() const;
-    /// Puts the markers on the bodies; a marker whose kernel leaves the storage is a blow-up
-    /// of step `step` (ending at `time`).
-    void place_markers(long step, double time);
-    double update_bodies(double dt);
-    void spread_marker_forces();
-    void move_bodies(double dt);
-    void resolve_contacts(double dt, StepReport& report);
-    void advance_time_level_in_systems();
-    /// Tracks rest_since_ after a step (time.rest_speed).
-    void track_rest();
-    /// The outer iterate as Anderson mixing sees it (docs/method.md §4): the bodies' U and ω
-    /// (measured), then λ, u and p (carried along).
-    void collect_iterate(std::vector<MixedSegment>& segments);
-    /// After eqs. (13)–(16) of outer iteration k ≥ 3: the iterate becomes Anderson's x_{k+1}.
-    void mix_iterate();
 
     CaseConfig config_;
     MacGrid<Dim> grid_;
     BoundaryConditions<Dim> bc_;
     FluidProperties properties_;
-    MomentumSettings momentum_settings_;
     FluidState<Dim> state_;
     FaceField<Dim> previous_level_; ///< u^{n−1}, to move the assembled b to the new level
-    /// The momentum systems were assembled about the current iterate with the same Δt and
-    /// forcing (by the convergence check that ended the last step).
-    bool is_reusable_assembly_ = false;
-    std::vector<MomentumSystem<Dim>> systems_;
-    std::unique_ptr<PoissonSolver<Dim>> poisson_;
     Clock clock_;
     double length_scale_; ///< smallest box side [m], for the steady-state measure
-    std::vector<RigidBody<Dim>> bodies_;
-    std::vector<BodyCoupling<Dim>> couplings_;
+    Particles<Dim> bodies_;
     AnyKernel kernel_;
-    std::optional<DemSettings> dem_; ///< none: no collisions (contact.model = "none")
-    bool is_paper_contact_ = false;  ///< contact.coupling = "paper"
-    std::optional<CellList<Dim>> contact_cells_;
-    DemWalls<Dim> walls_{};
-    std::vector<DemBody<Dim>> dem_bodies_;
-    /// The tangential springs of the open contacts, kept across time steps (to be checkpointed).
-    ContactHistory<Dim> contact_history_;
-    StepStart step_start_;
     Vec<Dim> gravity_ = Vec<Dim>::Zero();
     Vec<Dim> uniform_force_ = Vec<Dim>::Zero();
-    double coupling_seconds_ = 0.0;
-    double contact_seconds_ = 0.0;
-    double momentum_seconds_ = 0.0;
-    double pressure_seconds_ = 0.0;
+    std::optional<ContactSetup<Dim>> contacts_; ///< none: no collisions
+    /// The tangential springs of the open contacts, kept across time steps (checkpointed).
+    ContactHistory<Dim> contact_history_;
+    OuterIterations<Dim> outer_;
+    PhaseTimes times_;
     double rest_since_ = -1.0; ///< see at_rest_since() [s]; negative: some body is moving
-    PressureUpdate pressure_update_;
-    AndersonMixing mixing_; ///< of the outer iterate, reset every step
-    std::vector<MixedSegment> iterate_;
+
+    /// What a failed step must be able to give back (roll_back_step). u^n and u^{n−1} are
+    /// not here: the step keeps them in state_.u_n and previous_level_ anyway.
+    struct StepStart {
+        GridArray<Dim> p;
+        Particles<Dim> bodies;
+        ContactHistory<Dim> contacts;
+    };
+    StepStart step_start_;
 };
 
 } // namespace fddem

@@ -73,18 +73,18 @@ template <int Dim>
 Impact wall_impact(double restitution, double v0, int per_collision)
 {
     const double r = 0.05;
-    std::vector<DemBody<Dim>> bodies{test::ball<Dim>(
+    std::vector<Particle<Dim>> bodies{test::ball<Dim>(
         along<Dim>(1, r + 1e-9, 0.5), along<Dim>(1, -v0), r, 2500.0, glass(restitution))};
     const DemWalls<Dim> walls = test::box<Dim>(Vec<Dim>::Constant(1.0), {}, glass(restitution));
     DemWalls<Dim> floor = walls;
     floor.has_walls[1] = true;
     const HertzMindlin model;
-    const ContactPair pair =
-        make_contact_pair(ball_side(bodies[0].mass, bodies[0].inertia, r, bodies[0].material, true),
-                          wall_side(floor.material));
+    const ContactPair pair = make_contact_pair(
+        ball_side(bodies[0].mass(), bodies[0].inertia(), r, bodies[0].material, true),
+        wall_side(floor.material));
     const double t_c = model.elastic_collision_time(pair, v0);
     const double step = t_c / per_collision;
-    const double energy = 0.5 * bodies[0].mass * v0 * v0;
+    const double energy = 0.5 * bodies[0].mass() * v0 * v0;
     Impact out{0.0, 0.0, 0.0, 0.0};
     bool has_touched = false;
     ContactHistory<Dim> history;
@@ -99,7 +99,7 @@ Impact wall_impact(double restitution, double v0, int per_collision)
                                 return !(has_touched && overlap <= 0.0);
                             });
     out.restitution = bodies[0].velocity[1] / v0;
-    out.energy_ratio = 0.5 * bodies[0].mass * bodies[0].velocity.squaredNorm() / energy;
+    out.energy_ratio = 0.5 * bodies[0].mass() * bodies[0].velocity.squaredNorm() / energy;
     return out;
 }
 
@@ -152,7 +152,7 @@ TEST(HertzMindlin, PairCollisionGivesTheRestitutionOfThePair)
     // √(0.9 · 0.4) = 0.6.
     const double r1 = 0.05;
     const double r2 = 0.03;
-    std::vector<DemBody<2>> bodies{
+    std::vector<Particle<2>> bodies{
         test::ball<2>(Vec<2>(0.3, 0.5), Vec<2>(2.0, 1.0), r1, 2500.0, glass(0.9)),
         test::ball<2>(Vec<2>(0.3, 0.5) + (r1 + r2 + 1e-9) * Vec<2>(2.0, 1.0).normalized(),
                       Vec<2>(-1.0, -0.5), r2, 7800.0, glass(0.4))};
@@ -160,8 +160,8 @@ TEST(HertzMindlin, PairCollisionGivesTheRestitutionOfThePair)
     const double approach = (bodies[0].velocity - bodies[1].velocity).dot(n);
     const HertzMindlin model;
     const ContactPair pair = make_contact_pair(
-        ball_side(bodies[0].mass, bodies[0].inertia, r1, bodies[0].material, true),
-        ball_side(bodies[1].mass, bodies[1].inertia, r2, bodies[1].material, true));
+        ball_side(bodies[0].mass(), bodies[0].inertia(), r1, bodies[0].material, true),
+        ball_side(bodies[1].mass(), bodies[1].inertia(), r2, bodies[1].material, true));
     const double step = model.elastic_collision_time(pair, approach) / 200.0;
     ContactHistory<2> history;
     const DemWalls<2> open = test::box<2>(Vec<2>(1.0, 1.0), {false, false});

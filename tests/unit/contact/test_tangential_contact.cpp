@@ -101,16 +101,16 @@ template <int Dim>
 Throw throw_ball(const AnyContactModel& model, const Material& surface, double v0, double duration)
 {
     using test::along;
-    std::vector<DemBody<Dim>> bodies{
+    std::vector<Particle<Dim>> bodies{
         test::ball<Dim>(Vec<Dim>::Zero(), along<Dim>(0, v0), radius, density, surface)};
-    DemBody<Dim>& b = bodies[0];
-    b.steady_force = along<Dim>(1, -b.mass * gravity);
+    Particle<Dim>& b = bodies[0];
+    b.contact.steady_force = along<Dim>(1, -b.mass() * gravity);
     // A box long enough along x for the throw; small across (the cell list spans it).
     DemWalls<Dim> floor = test::box<Dim>(along<Dim>(0, 4.0, 2.0), {}, surface);
     floor.has_walls[1] = true;
     // Static overlap: F_n(α) = m g, by bisection on the model's law.
-    const ContactPair pair =
-        make_contact_pair(ball_side(b.mass, b.inertia, radius, surface, true), wall_side(surface));
+    const ContactPair pair = make_contact_pair(
+        ball_side(b.mass(), b.inertia(), radius, surface, true), wall_side(surface));
     double low = 0.0;
     double high = 0.1 * radius;
     for (int k = 0; k < 100; ++k) {
@@ -120,7 +120,7 @@ Throw throw_ball(const AnyContactModel& model, const Material& surface, double v
                 return m.law({mid, 0.0}, pair).normal_force;
             },
             model);
-        (force < b.mass * gravity ? low : high) = mid;
+        (force < b.mass() * gravity ? low : high) = mid;
     }
     b.centre = along<Dim>(1, radius - low, 1.0);
     const double x0 = b.centre.x();

@@ -66,10 +66,11 @@ void expect_multigrid_matches_sweeps(const BoundaryConditions<Dim>& bc)
 
     for (int axis = 0; axis < Dim; ++axis) {
         SCOPED_TRACE(axis);
-        MomentumSettings sweeps_alone{dt, ConvectionScheme::central, 1.0, 4000, 0};
-        MomentumSettings multigrid{dt, ConvectionScheme::central, 1.0, 4, 1};
+        MomentumSettings sweeps_alone{ConvectionScheme::central, 1.0, 4000, 0};
+        MomentumSettings multigrid{ConvectionScheme::central, 1.0, 4, 1};
         MomentumSystem<Dim> system(grid);
-        static_cast<void>(assemble_momentum(grid, bc, fluid, sweeps_alone, start, axis, system));
+        static_cast<void>(
+            assemble_momentum(grid, bc, fluid, sweeps_alone, dt, start, axis, system));
 
         FluidState<Dim> reference = start;
         solve_momentum(grid, bc, sweeps_alone, system, axis, reference);

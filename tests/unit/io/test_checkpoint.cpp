@@ -236,7 +236,7 @@ void expect_same_state(const Simulation<Dim>& a, const Simulation<Dim>& b)
         EXPECT_EQ(a.bodies()[k].velocity, b.bodies()[k].velocity) << "body " << k;
         EXPECT_EQ(a.bodies()[k].omega, b.bodies()[k].omega) << "body " << k;
         EXPECT_EQ(a.bodies()[k].force, b.bodies()[k].force) << "body " << k;
-        EXPECT_EQ(a.couplings()[k].lambda, b.couplings()[k].lambda) << "body " << k;
+        EXPECT_EQ(a.bodies()[k].coupling.lambda, b.bodies()[k].coupling.lambda) << "body " << k;
     }
 }
 
@@ -257,8 +257,8 @@ int expect_bit_identical_continuation(const CaseConfig& config, int steps_before
     record.field_frames = {{0.0, "fields/fields_000000.vtr"}};
     write_checkpoint(file, original, record);
     int in_contact = 0;
-    for (const BodyCoupling<Dim>& c : original.couplings()) {
-        in_contact += c.is_in_contact ? 1 : 0;
+    for (const Particle<Dim>& body : original.bodies()) {
+        in_contact += body.contact.is_in_contact ? 1 : 0;
     }
     for (int k = 0; k < steps_after; ++k) {
         static_cast<void>(original.advance());

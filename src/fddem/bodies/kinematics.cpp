@@ -1,0 +1,27 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/bodies/kinematics.hpp"
+
+namespace fddem {
+
+template <int Dim>
+void move_bodies(std::span<Particle<Dim>> bodies, double dt, bool is_paper_contact)
+{
+    for (Particle<Dim>& body : bodies) {
+        if (body.motion == Motion::fixed) {
+            continue;
+        }
+        if (is_paper_contact && body.contact.is_in_contact) {
+            body.centre = body.contact.centre;
+        } else {
+            body.centre += 0.5 * dt * (body.velocity + body.velocity_n); // eq. (17)
+        }
+        if constexpr (Dim == 2) {
+            body.angle += 0.5 * dt * (body.omega + body.omega_n);
+        }
+    }
+}
+
+template void move_bodies<2>(std::span<Particle<2>>, double, bool);
+template void move_bodies<3>(std::span<Particle<3>>, double, bool);
+
+} // namespace fddem

@@ -1,0 +1,19 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The position update of eq. (17): X^{n+1} = X^n + Δt (U^n + U^{n+1})/2, and likewise the
+/// orientation θ with ω (2D; a sphere's markers need no orientation).
+
+#include "fddem/bodies/particle.hpp"
+
+#include <span>
+
+namespace fddem {
+
+/// Moves every free or prescribed body over a step of `dt` [s] by eq. (17), from its level-n
+/// and new velocities. With `is_paper_contact` (contact.coupling = "paper"), a free body that
+/// was in contact takes the DEM's end position instead (§2.3: "DEM is used to update the
+/// position"). Fixed bodies stay.
+template <int Dim>
+void move_bodies(std::span<Particle<Dim>> bodies, double dt, bool is_paper_contact);
+
+} // namespace fddem

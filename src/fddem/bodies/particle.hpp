@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// One rigid particle, the one record of everything fddem knows about it: who it is (a stable
+/// id), its shape and material, the state eqs. (13)–(14) and (17) advance, its Lagrangian markers
+/// with λ (eqs. (15)–(16)), and what the DEM sub-steps of the current step did to it (eq. (18)).
+/// Every stage of the time step reads and writes this record in place: there are no parallel
+/// arrays to keep in step.
+
+#include "fddem/bodies/ball.hpp"
+#include "fddem/bodies/marker_set.hpp"
+#include "fddem/bodies/material.hpp"
+#include "fddem/core/vec.hpp"
+
+#include <vector>
+
+namespace fddem {
+
+/// How a body moves: by the fluid and gravity (free), at a given velocity (prescribed, e.g. a
+/// towed disk), or not at all (fixed).
+enum class Motion { free, prescribed, fixed };
+
+/// The fictitious-domain coupling of one body (paper §2.2–2.3): its markers and λ.
+template <int Dim>
+struct MarkerCoupling {
+    MarkerSet<Dim> markers;            ///< body frame
+    std::vector<Vec<Dim>> offsets;     ///< r_l in the world frame (rotated) [m]
+    std::vector<Vec<Dim>> positions;   ///< X_l = centre + r_l [m]
+    std::vector<Vec<Dim>> fluid;       ///< I(u) at the markers [m/s]
+    std::vector<Vec<Dim>> lambda;      ///< λ [m/s²]
+    std::vector<Vec<Dim>> lambda_star; ///< λ* [m/s²]
+    double fluid_second_moment = 0.0;  ///< Σ ΔV_l |r_l⊥|² [m⁵] (2D: m⁴)
+    double forcing_change = 0.0;       ///< of the last λ update (rigid_coupling.hpp) [m/s]
+
+    MarkerCoupling() = default;
+    explicit MarkerCoupling(MarkerSet<Dim> set)
+        : markers(std::move(set)), offsets(markers.size()), positions(markers.size()),
+          fluid(markers.size()), lambda(markers.size(), Vec<Dim>::Zero()),
+          lambda_star(markers.size(), Vec<Dim>::Zero()),
+          fluid_second_moment(markers.second_moment())
+    {
+    }
+};
+
+/// The DEM sub-steps of one time step (eq. (18), contact/dem_step.hpp): what the step holds on
+/// the body, and what the sub-steps did to it. The DEM advances centre, velocity and omega
+/// here, from the body's own state at the step's start, which it leaves as it was.
+template <int Dim>
+struct ContactState {
+    Vec<Dim> steady_force = Vec<Dim>::Zero(); ///< held over the step: the buoyant weight [N]
+    AngularVec<Dim> steady_torque = zero_angular<Dim>(); ///< [N·m]
+    Vec<Dim> centre = Vec<Dim>::Zero();                  ///< at the end of the sub-steps [m]
+    Vec<Dim> velocity = Vec<Dim>::Zero();                ///< [m/s]
+    AngularVec<Dim> omega = zero_angular<Dim>();         ///< [rad/s]
+    Vec<Dim> mean_force = Vec<Dim>::Zero();              ///< contact impulse / Δt [N]
+    AngularVec<Dim> mean_torque = zero_angular<Dim>();   ///< [N·m]
+    bool is_in_contact = false; ///< touched something (or came within the margin) this step
+};
+
+template <int Dim>
+struct Particle {
+    int id = 0; ///< stable for the whole run (and across ranks and restarts)
+    Ball<Dim> shape{1.0};
+    double density = 1.0; ///< ρs [kg/m³]
+    Motion motion = Motion::free;
+    Material material{}; ///< its surface, for contacts
+
+    Vec<Dim> centre = Vec<Dim>::Zero();          ///< [m]
+    double angle = 0.0;                          ///< orientation θ about z [rad] (2D)
+    Vec<Dim> velocity = Vec<Dim>::Zero();        ///< U [m/s]
+    AngularVec<Dim> omega = zero_angular<Dim>(); ///< ω [rad/s]
+    Vec<Dim> force = Vec<Dim>::Zero(); ///< hydrodynamic force of the last step [N] (2D: N/m)
+    AngularVec<Dim> torque = zero_angular<Dim>();  ///< hydrodynamic torque of the last step [N·m]
+    Vec<Dim> velocity_n = Vec<Dim>::Zero();        ///< U^n, the level the step started from
+    AngularVec<Dim> omega_n = zero_angular<Dim>(); ///< ω^n
+
+    MarkerCoupling<Dim> coupling;
+    ContactState<Dim> contact;
+
+    [[nodiscard]] double radius() const noexcept { return shape.radius(); }
+    [[nodiscard]] double volume() const noexcept { return shape.volume(); }
+    [[nodiscard]] double mass() const noexcept { return density * shape.volume(); }
+    /// Moment of inertia about the centre [kg·m²] (2D: per unit depth); a ball's is isotropic.
+    [[nodiscard]] double inertia() const noexcept { return density * shape.second_moment(); }
+    /// Moved by the fluid and by contacts; a fixed or prescribed body is not.
+    [[nodiscard]] bool is_free() const noexcept { return motion == Motion::free; }
+};
+
+} // namespace fddem

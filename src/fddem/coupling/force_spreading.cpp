@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/coupling/force_spreading.hpp"
+
+#include "fddem/coupling/transfer.hpp"
+
+namespace fddem {
+
+template <int Dim>
+void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                          const AnyKernel& kernel, double fluid_density,
+                          const Vec<Dim>& uniform_force, FaceField<Dim>& body_force)
+{
+    for (int a = 0; a < Dim; ++a) {
+        body_force[a].fill(uniform_force[a]);
+    }
+    std::visit(
+        [&](auto k) {
+            for (const Particle<Dim>& body : bodies) {
+                const MarkerCoupling<Dim>& c = body.coupling;
+                for (std::size_t l = 0; l < c.markers.size(); ++l) {
+                    spread_vector<Dim, decltype(k)>(grid, body_force, c.positions[l],
+                                                    fluid_density * c.lambda[l],
+                                                    c.markers.volumes[l]);
+                }
+            }
+        },
+        kernel);
+}
+
+template void spread_marker_forces<2>(std::span<const Particle<2>>, const MacGrid<2>&,
+                                      const AnyKernel&, double, const Vec<2>&, FaceField<2>&);
+template void spread_marker_forces<3>(std::span<const Particle<3>>, const MacGrid<3>&,
+                                      const AnyKernel&, double, const Vec<3>&, FaceField<3>&);
+
+} // namespace fddem

@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/coupling/marker_placement.hpp"
+
+#include "fddem/core/errors.hpp"
+#include "fddem/coupling/transfer.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+
+namespace fddem {
+namespace {
+
+/// r turned by the body's orientation: by θ about z in 2D; a sphere's markers need not turn.
+template <int Dim>
+Vec<Dim> to_world(const Vec<Dim>& r, double angle)
+{
+    if constexpr (Dim == 2) {
+        const double cs = std::cos(angle);
+        const double sn = std::sin(angle);
+        return {cs * r.x() - sn * r.y(), sn * r.x() + cs * r.y()};
+    } else {
+        return r;
+    }
+}
+
+template <int Dim, class Kernel>
+void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time)
+{
+    const std::string who = "body " + std::to_string(body.id);
+    if (!body.centre.allFinite() || !body.velocity.allFinite()) {
+        throw NumericalError(step, time, who,
+                             "the body's motion is not finite: the coupling has blown up");
+    }
+    MarkerCoupling<Dim>& c = body.coupling;
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        c.offsets[l] = to_world<Dim>(c.markers.offsets[l], body.angle);
+        c.positions[l] = body.centre + c.offsets[l];
+        if (!fits_in_storage<Dim, Kernel>(grid, c.positions[l])) {
+            throw NumericalError(step, time, who,
+                                 fmt::format("a marker of the body left the box (its kernel "
+                                             "support reaches past the ghost layers): centre "
+                                             "({:.6g}), velocity ({:.6g})",
+                                             fmt::join(body.centre, ", "),
+                                             fmt::join(body.velocity, ", ")));
+        }
+    }
+}
+
+} // namespace
+
+template <int Dim>
+void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                   const AnyKernel& kernel, long step, double time)
+{
+    std::visit(
+        [&](auto k) {
+            for (Particle<Dim>& body : bodies) {
+                place<Dim, decltype(k)>(body, grid, step, time);
+            }
+        },
+        kernel);
+}
+
+template void place_markers<2>(std::span<Particle<2>>, const MacGrid<2>&, const AnyKernel&, long,
+                               double);
+template void place_markers<3>(std::span<Particle<3>>, const MacGrid<3>&, const AnyKernel&, long,
+                               double);
+
+} // namespace fddem

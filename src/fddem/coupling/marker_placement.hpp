@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Where the markers are (paper §2.2, Fig. 1): each body's markers, laid out in its own frame,
+/// turned by its orientation and carried to its centre.
+
+#include "fddem/bodies/particle.hpp"
+#include "fddem/coupling/delta_kernel.hpp"
+#include "fddem/grid/mac_grid.hpp"
+
+#include <span>
+
+namespace fddem {
+
+/// Sets every body's world-frame offsets r_l and positions X_l = centre + r_l. Throws
+/// NumericalError (of time step `step`, ending at `time` [s]) if a body's motion is not finite or
+/// a marker's kernel support leaves the grid's storage.
+template <int Dim>
+void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                   const AnyKernel& kernel, long step, double time);
+
+} // namespace fddem

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/coupling/rigid_update.hpp"
+
+#include "fddem/coupling/rigid_coupling.hpp"
+#include "fddem/coupling/transfer.hpp"
+
+#include <algorithm>
+
+namespace fddem {
+namespace {
+
+/// U^{n+1}, ω^{n+1} of one body: eqs. (13)–(14) for a free body, the DEM's end state for a free
+/// body in contact under the paper's coupling, the given motion for a fixed or prescribed one.
+template <int Dim>
+RigidVelocity<Dim> new_motion(const Particle<Dim>& body, const RigidUpdateSettings<Dim>& s)
+{
+    const MarkerCoupling<Dim>& c = body.coupling;
+    if (!body.is_free()) {
+        return {body.velocity, body.omega};
+    }
+    if (s.is_paper_contact && body.contact.is_in_contact) {
+        // §2.3: "When the collision happens, the DEM is used in place of (13) and (14)": the
+        // body moves as the sub-steps say; the fluid is made to follow.
+        return {body.contact.velocity, body.contact.omega};
+    }
+    const RigidUpdateInput<Dim> in{body.velocity_n,
+                                   body.omega_n,
+                                   body.density,
+                                   body.volume(),
+                                   body.inertia(),
+                                   s.fluid_density,
+                                   c.fluid_second_moment,
+                                   s.gravity,
+                                   s.dt,
+                                   body.contact.mean_force,
+                                   body.contact.mean_torque};
+    return rigid_velocity<Dim>(in, c.offsets, c.markers.volumes, c.fluid,
+                               c.lambda_star); // eqs. (13)–(14)
+}
+
+template <int Dim, class Kernel>
+double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
+                  FaceField<Dim>& u)
+{
+    MarkerCoupling<Dim>& c = body.coupling;
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        c.fluid[l] = interpolate_velocity<Dim, Kernel>(grid, u, c.positions[l]); // I(u)
+    }
+    const RigidVelocity<Dim> motion = new_motion(body, s);
+    const double defect = update_marker_force<Dim>(motion, c.offsets, c.fluid, c.lambda_star, s.dt,
+                                                   c.lambda); // eq. (15)
+    c.forcing_change = forcing_change<Dim>(c.offsets, c.markers.volumes, c.lambda, c.lambda_star,
+                                           s.dt, body.volume(), body.radius());
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        // eq. (16): u ← u + Δt D(λ − λ*)
+        spread_vector<Dim, Kernel>(grid, u, c.positions[l], s.dt * (c.lambda[l] - c.lambda_star[l]),
+                                   c.markers.volumes[l]);
+    }
+    c.lambda_star = c.lambda; // λ* ← λ
+    body.velocity = motion.velocity;
+    body.omega = motion.omega;
+    return defect;
+}
+
+} // namespace
+
+template <int Dim>
+double update_rigid_bodies(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                           const AnyKernel& kernel, const RigidUpdateSettings<Dim>& settings,
+                           FaceField<Dim>& u)
+{
+    double defect = 0.0;
+    std::visit(
+        [&](auto k) {
+            for (Particle<Dim>& body : bodies) {
+                defect = std::max(defect, update_one<Dim, decltype(k)>(body, grid, settings, u));
+            }
+        },
+        kernel);
+    return defect;
+}
+
+template double update_rigid_bodies<2>(std::span<Particle<2>>, const MacGrid<2>&, const AnyKernel&,
+                                       const RigidUpdateSettings<2>&, FaceField<2>&);
+template double update_rigid_bodies<3>(std::span<Particle<3>>, const MacGrid<3>&, const AnyKernel&,
+                                       const RigidUpdateSettings<3>&, FaceField<3>&);
+
+} // namespace fddem

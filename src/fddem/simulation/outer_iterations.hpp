@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The SIMPLE outer iterations of one implicit-Euler time step (paper §2.2–2.3), as one unit:
+///
+///   repeat, k = 1, 2, …:
+///     eqs. (7)–(8)   momentum coefficients about the latest iterate; stop if converged;
+///                    else relax them → u*
+///     eqs. (9)–(12)  pressure correction: p′, then p and u corrected
+///     eqs. (13)–(14) rigid-body velocities U, ω                  ┐ coupling/rigid_update.hpp,
+///     eq. (15)       marker forces λ                               │ with bodies only
+///     eq. (16)       u ← u + Δt D(λ − λ*), λ* ← λ                 ┘
+///                    Anderson mixing of the iterate (docs/method.md §4), from k = 3
+///                    the body force ρf D(λ*) for the next iteration
+///
+/// It owns what only the iterations use (the momentum systems, the pressure solver, the
+/// mixing's history and per-step scratch, allocated once), so that no allocation happens inside
+/// the loop.
+
+#include "fddem/bodies/particles.hpp"
+#include "fddem/core/phase_timer.hpp"
+#include "fddem/coupling/delta_kernel.hpp"
+#include "fddem/coupling/rigid_update.hpp"
+#include "fddem/fluid/boundary_conditions.hpp"
+#include "fddem/fluid/fluid_state.hpp"
+#include "fddem/fluid/momentum.hpp"
+#include "fddem/fluid/pressure_correction.hpp"
+#include "fddem/linsolve/anderson_mixing.hpp"
+#include "fddem/linsolve/poisson_solver.hpp"
+#include "fddem/simulation/case_config.hpp"
+#include "fddem/simulation/step_report.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace fddem {
+
+/// What a step gives the iterations besides the fluid and the bodies.
+template <int Dim>
+struct StepInputs {
+    double dt;                            ///< Δt [s]
+    const Vec<Dim>& uniform_force;        ///< on the fluid [N/m³]
+    const FaceField<Dim>& previous_level; ///< u^{n−1}, to move a reused assembly's b to level n
+    long step;                            ///< the step being taken (for messages)
+    double time;                          ///< its end time [s] (for messages)
+};
+
+template <int Dim>
+class OuterIterations {
+public:
+    /// Borrows the grid, boundary conditions, fluid properties and kernel, which must outlive it.
+    /// `is_paper_contact`: a free body in contact moves as the DEM says (contact.coupling).
+    OuterIterations(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                    const FluidProperties& properties, const AnyKernel& kernel,
+                    const CaseConfig& config, const Vec<Dim>& gravity, bool is_paper_contact);
+
+    /// Adopts Δt [s] and what derives from it (the momentum multigrid's cycles).
+    void set_time_step(double dt);
+
+    /// Eqs. (7)–(16) to convergence (or the iteration limit); fills the report's residuals,
+    /// iteration count and convergence flag. Throws NumericalError if the flow blows up.
+    void iterate(const StepInputs<Dim>& in, FluidState<Dim>& state, Particles<Dim>& bodies,
+                 PhaseTimes& times, StepReport& report);
+
+    /// ρf D(λ) plus the uniform force, into state.body_force (eq. (4a)'s pseudo body force).
+    void spread_body_force(const Particles<Dim>& bodies, const Vec<Dim>& uniform_force,
+                           FluidState<Dim>& state) const;
+
+    /// The momentum systems, for checkpoints (their b carries the time level).
+    [[nodiscard]] std::vector<MomentumSystem<Dim>>& systems() noexcept { return systems_; }
+    [[nodiscard]] const std::vector<MomentumSystem<Dim>>& systems() const noexcept
+    {
+        return systems_;
+    }
+    /// True if the systems were assembled about the current iterate with the same Δt and forcing
+    /// (by the convergence test that ended the last step), so the next step may reuse them.
+    [[nodiscard]] bool& is_reusable_assembly() noexcept { return is_reusable_assembly_; }
+    [[nodiscard]] const bool& is_reusable_assembly() const noexcept
+    {
+        return is_reusable_assembly_;
+    }
+    [[nodiscard]] PoissonSolver<Dim>& pressure_solver() noexcept { return *poisson_; }
+    [[nodiscard]] const PoissonSolver<Dim>& pressure_solver() const noexcept { return *poisson_; }
+    [[nodiscard]] const MomentumSettings& momentum_settings() const noexcept { return momentum_; }
+
+private:
+    /// eqs. (7)–(8): assembles the systems (or moves a reused assembly to the new level);
+    /// returns the momentum residual max |r/a_P| [m/s] of the current iterate.
+    double assemble(int k, const StepInputs<Dim>& in, const FluidState<Dim>& state);
+    /// The step's convergence test, on the residuals and body change of the last iteration.
+    [[nodiscard]] bool is_step_converged(bool has_bodies, const StepReport& report) const;
+    /// Throws NumericalError if the momentum residual of outer iteration k is not finite.
+    void check_finite(int k, const StepInputs<Dim>& in, const FluidState<Dim>& state,
+                      const StepReport& report) const;
+    /// Relaxes every component towards its system's solution → u*.
+    void solve_momentum_systems(FluidState<Dim>& state, PhaseTimes& times);
+    /// eqs. (9)–(12): p′ from ∇·u*, then p and u corrected; returns the mass residual
+    /// max |∇·u*| h relative to `velocity_scale`.
+    double correct_pressure(double dt, double velocity_scale, FluidState<Dim>& state,
+                            PhaseTimes& times);
+    /// eqs. (13)–(16) and the mixing; sets report.body_change and rigid_defect.
+    void couple_bodies(int k, double velocity_scale, const StepInputs<Dim>& in,
+                       FluidState<Dim>& state, Particles<Dim>& bodies, StepReport& report);
+    /// The outer iterate as Anderson mixing sees it (docs/method.md §4): the bodies' U and ω
+    /// (measured), then λ, u and p (carried along).
+    void collect_iterate(FluidState<Dim>& state, Particles<Dim>& bodies);
+    [[nodiscard]] bool is_mixed_iteration(int k) const noexcept;
+
+    const MacGrid<Dim>& grid_;
+    const BoundaryConditions<Dim>& bc_;
+    const FluidProperties& properties_;
+    const AnyKernel& kernel_;
+    double tolerance_;
+    int max_iterations_;
+    double pressure_relaxation_;
+    PressureUpdate pressure_update_;
+    std::string momentum_solver_; ///< simple.momentum_solver: how set_time_step picks cycles
+    int momentum_cycles_;         ///< simple.momentum_cycles
+    MomentumSettings momentum_;
+    Vec<Dim> gravity_;
+    bool is_paper_contact_;
+    double dt_ = 0.0;
+
+    std::vector<MomentumSystem<Dim>> systems_;
+    std::unique_ptr<PoissonSolver<Dim>> poisson_;
+    bool is_reusable_assembly_ = false;
+    AndersonMixing mixing_;  ///< of the outer iterate, reset every step
+    bool is_mixing_ = false; ///< this step: mixing on, and a free body to measure
+    std::vector<MixedSegment> iterate_;
+    std::vector<Vec<Dim>> previous_velocity_;     ///< U of the last iteration, per body
+    std::vector<AngularVec<Dim>> previous_omega_; ///< ω of the last iteration, per body
+};
+
+} // namespace fddem

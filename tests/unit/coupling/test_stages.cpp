@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: MIT
+// The coupling stages of the time step applied to the grid: marker placement, the body force
+// ρf D(λ), the rigid update (13)–(16) and the hydrodynamic force.
+
+#include "fddem/core/errors.hpp"
+#include "fddem/coupling/force_spreading.hpp"
+#include "fddem/coupling/hydrodynamic_force.hpp"
+#include "fddem/coupling/marker_placement.hpp"
+#include "fddem/coupling/markers.hpp"
+#include "fddem/coupling/rigid_update.hpp"
+#include "fddem/grid/loops.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace fddem {
+namespace {
+
+MacGrid<2> unit_box()
+{
+    return MacGrid<2>(Index<2>{32, 32}, Vec<2>::Zero(), Vec<2>(1.0, 1.0));
+}
+
+Particle<2> disk_at(const Vec<2>& centre, double diameter = 0.3)
+{
+    Particle<2> p;
+    p.shape = Ball<2>{diameter};
+    p.centre = centre;
+    p.coupling = MarkerCoupling<2>(make_ball_markers(p.shape, 4));
+    return p;
+}
+
+TEST(MarkerPlacement, TurnsTheLayoutWithTheBodyAndCarriesItToTheCentre)
+{
+    std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.4))};
+    bodies[0].angle = 0.5 * std::numbers::pi;
+    place_markers<2>(bodies, unit_box(), AnyKernel{HatKernel{}}, 0, 0.0);
+    const MarkerCoupling<2>& c = bodies[0].coupling;
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        const Vec<2>& r = c.markers.offsets[l];
+        EXPECT_NEAR(c.offsets[l].x(), -r.y(), 1e-15); // a quarter turn: (x, y) → (−y, x)
+        EXPECT_NEAR(c.offsets[l].y(), r.x(), 1e-15);
+        EXPECT_EQ(c.positions[l], bodies[0].centre + c.offsets[l]);
+    }
+}
+
+TEST(MarkerPlacement, ABodyOutOfTheBoxIsANumericalErrorNamingIt)
+{
+    std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.5)), disk_at(Vec<2>(1.2, 0.5))};
+    bodies[1].id = 7;
+    try {
+        place_markers<2>(bodies, unit_box(), AnyKernel{HatKernel{}}, 12, 0.3);
+        FAIL() << "no error";
+    } catch (const NumericalError& e) {
+        EXPECT_EQ(e.where(), "body 7");
+        EXPECT_EQ(e.step(), 12);
+    }
+    bodies[1].centre = Vec<2>(0.5, std::nan(""));
+    EXPECT_THROW(place_markers<2>(bodies, unit_box(), AnyKernel{HatKernel{}}, 12, 0.3),
+                 NumericalError);
+}
+
+TEST(ForceSpreading, AddsExactlyTheMarkersTotalForceToTheUniformOne)
+{
+    // Σ_faces f ΔV_cell = F_uniform V_box + ρf Σ_l ΔV_l λ_l: D conserves the force.
+    const MacGrid<2> grid = unit_box();
+    std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.31, 0.62))};
+    place_markers<2>(bodies, grid, AnyKernel{Peskin4Kernel{}}, 0, 0.0);
+    MarkerCoupling<2>& c = bodies[0].coupling;
+    Vec<2> total = Vec<2>::Zero();
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        c.lambda[l] = Vec<2>(std::sin(3.0 * l), std::cos(2.0 * l));
+        total += c.markers.volumes[l] * c.lambda[l];
+    }
+    const double rho = 2.5;
+    FaceField<2> force(grid);
+    spread_marker_forces<2>(bodies, grid, AnyKernel{Peskin4Kernel{}}, rho, Vec<2>(0.0, -1.0),
+                            force);
+    for (int a = 0; a < 2; ++a) {
+        // Faces strictly inside the box carry a full cell of fluid; the markers are far from
+        // the walls, so all their weight lands there. Subtract the uniform part on them.
+        Box<2> inner = grid.face_box(a);
+        inner.lo[static_cast<std::size_t>(a)] += 1;
+        inner.hi[static_cast<std::size_t>(a)] -= 1;
+        const double uniform = a == 1 ? -1.0 : 0.0;
+        const double sum = sum_over(
+            inner, [&](const Index<2>& f) { return (force[a](f) - uniform) * grid.cell_volume(); });
+        EXPECT_NEAR(sum, rho * total[a], 1e-12 * rho * c.markers.size());
+    }
+}
+
+TEST(RigidUpdate, ABodyMovingWithTheFluidNeedsNoForce)
+{
+    // u uniform = U: eq. (13) gives U back (no λ* yet, fluid density = body density, no
+    // gravity), eq. (15) gives λ = 0, eq. (16) leaves u unchanged.
+    const MacGrid<2> grid = unit_box();
+    std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.5))};
+    bodies[0].velocity_n = Vec<2>(0.2, -0.1);
+    FaceField<2> u(grid);
+    u[0].fill(0.2);
+    u[1].fill(-0.1);
+    place_markers<2>(bodies, grid, AnyKernel{HatKernel{}}, 0, 0.0);
+    const double defect = update_rigid_bodies<2>(bodies, grid, AnyKernel{HatKernel{}},
+                                                 {1.0, Vec<2>::Zero(), 0.01, false}, u);
+    EXPECT_NEAR(defect, 0.0, 1e-14);
+    EXPECT_NEAR((bodies[0].velocity - Vec<2>(0.2, -0.1)).norm(), 0.0, 1e-14);
+    EXPECT_NEAR(bodies[0].omega, 0.0, 1e-13);
+    for (const Vec<2>& lambda : bodies[0].coupling.lambda) {
+        EXPECT_NEAR(lambda.norm(), 0.0, 1e-11);
+    }
+    EXPECT_NEAR(u[0](Index<2>{16, 16}), 0.2, 1e-14);
+}
+
+TEST(HydrodynamicForce, IsTheMomentumBalanceOfTheMarkers)
+{
+    // F_H = ρf V ΔU/Δt − ρf Σ ΔV_l λ_l; with λ uniform and U unchanged, F_H = −ρf V λ.
+    std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.5))};
+    place_markers<2>(bodies, unit_box(), AnyKernel{HatKernel{}}, 0, 0.0);
+    for (Vec<2>& lambda : bodies[0].coupling.lambda) {
+        lambda = Vec<2>(0.0, 3.0);
+    }
+    measure_hydrodynamic_forces<2>(bodies, 2.0, 0.01);
+    const double volume = bodies[0].volume();
+    EXPECT_NEAR(bodies[0].force.y(), -2.0 * volume * 3.0, 1e-12);
+    EXPECT_NEAR(bodies[0].torque, 0.0, 1e-12); // uniform λ has no moment about the centre
+}
+
+} // namespace
+} // namespace fddem
