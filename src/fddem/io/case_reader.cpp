@@ -585,6 +585,10 @@ private:
         c.rest_duration = real("time", "rest_duration");
         c.min_end = real("time", "min_end");
         c.max_steps = integer("time", "max_steps");
+        if (node("time", "max_courant") != nullptr) {
+            c.max_courant = real("time", "max_courant");
+        }
+        c.is_steady = node("time", "steady")->value<bool>().value_or(false);
         c.tolerance = real("simple", "tolerance");
         c.max_outer_iterations = static_cast<int>(integer("simple", "max_outer_iterations"));
         c.velocity_relaxation = real("simple", "velocity_relaxation");
@@ -1163,6 +1167,17 @@ private:
             where_.fail("time.end", doc_.get("time"),
                         "give time.end, time.steady_tolerance or time.rest_speed: the run needs "
                         "a way to stop");
+        }
+        if (c.is_steady && !c.steady_tolerance) {
+            where_.fail("time.steady", node("time", "steady"),
+                        "a pseudo-time march needs time.steady_tolerance, the residual at "
+                        "which it has arrived");
+        }
+        if (c.is_steady && std::any_of(c.bodies.begin(), c.bodies.end(),
+                                       [](const auto& b) { return b.motion == "free"; })) {
+            where_.fail("time.steady", node("time", "steady"),
+                        "free bodies have no steady state to march to: use time.max_courant "
+                        "for an adaptive, time-accurate step");
         }
         if (c.rest_speed && std::none_of(c.bodies.begin(), c.bodies.end(),
                                          [](const auto& b) { return b.motion == "free"; })) {

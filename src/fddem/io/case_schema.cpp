@@ -149,6 +149,18 @@ std::vector<KeySpec> case_schema()
     s.push_back(ranged(
         key("time", "max_steps", T::integer, none, "100000000", "Stop after this many steps."), 1,
         inf, false, false));
+    s.push_back(positive(key("time", "max_courant", T::real, none, "none",
+                             "Adaptive time step: Δt limited so that the fluid and the bodies "
+                             "move at most this many cells per step (max |u_d| Δt / h_d and "
+                             "(|U| + |ω|R) Δt / h); time.dt is then the first and the largest "
+                             "step, and Δt grows by at most 1.2× per step. None: the fixed "
+                             "time.dt.")));
+    s.push_back(key("time", "steady", T::boolean, none, "false",
+                    "Pseudo-time march to a steady state (needs time.steady_tolerance, no "
+                    "free bodies): Δt starts at time.dt and follows the residual, Δt ← Δt · "
+                    "r_old/r_new (switched evolution relaxation, Mulder & van Leer 1985), at "
+                    "most 2× per step and within time.max_courant if given. Intermediate "
+                    "states are not time-accurate."));
 
     s.push_back(ranged(key("simple", "tolerance", T::real, none, "1e-5",
                            "SIMPLE convergence: normalised mass and momentum residuals below "

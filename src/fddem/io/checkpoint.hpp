@@ -28,7 +28,8 @@
 namespace fddem {
 
 /// The format version written; only this one is read (a new state member bumps it).
-inline constexpr std::uint64_t checkpoint_format_version = 3; // 2: springs; 3: rest_since
+// 2: springs; 3: rest_since; 4: the adaptive time step's residual history
+inline constexpr std::uint64_t checkpoint_format_version = 4;
 
 /// (key, value as text) pairs: what a checkpoint's grid and bodies must share with the case it
 /// is restored into.

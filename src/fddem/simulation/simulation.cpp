@@ -12,6 +12,7 @@
 #include "fddem/simulation/step_diagnostics.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fddem {
 
@@ -25,7 +26,9 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
       gravity_(vector_of<Dim>(config.gravity)),
       contacts_(make_contact_setup<Dim>(config, grid_, bc_, bodies_)),
       outer_(grid_, bc_, properties_, kernel_, config, gravity_,
-             contacts_ && contacts_->is_paper_coupling)
+             contacts_ && contacts_->is_paper_coupling),
+      step_control_{config.dt, config.max_courant, config.is_steady, config.end_time,
+                    config.is_steady ? 2.0 : 1.2}
 {
     clock_.dt = config.dt;
     place_markers<Dim>(bodies_.all(), grid_, kernel_, 0, 0.0);
@@ -39,6 +42,44 @@ void Simulation<Dim>::set_time_step(double dt)
 {
     clock_.dt = dt;
     outer_.set_time_step(dt);
+    if (contacts_) {
+        // N_i was derived for time.dt (io/case_reader): keep the sub-step Δt/N_i at most what
+        // it was there. The small allowance keeps N_i itself at Δt = time.dt despite rounding.
+        const double share = dt / config_.dt;
+        contacts_->settings.substeps = std::max(
+            1, static_cast<int>(std::ceil(share * std::max(1, config_.contact_substeps) - 1e-9)));
+    }
+}
+
+template <int Dim>
+void Simulation<Dim>::choose_time_step()
+{
+    // The fluid, the walls and inflow that drive it (a lid starts a cavity at rest), and the
+    // bodies' rims, which a free body's buoyant weight speeds up within the step: a body at
+    // rest would otherwise take the first step at time.dt whatever its weight (measured: a
+    // disk of ρs/ρf = 100 fell 6 cells in it).
+    const double h = grid_.spacing().minCoeff();
+    double speed_per_cell =
+        std::max(max_speed_per_cell(grid_, state_.u), std::abs(bc_.inflow.speed) / h);
+    for (int d = 0; d < Dim; ++d) {
+        for (int side = 0; side < 2; ++side) {
+            speed_per_cell = std::max(speed_per_cell, bc_.wall(d, side).norm() / h);
+        }
+    }
+    const double reach = config_.max_courant.value_or(1.0) * h; // [m] allowed per step
+    for (const Particle<Dim>& body : bodies_) {
+        const double s = body.velocity.norm() + magnitude<Dim>(body.omega) * body.radius();
+        const double a = body.is_free()
+                             ? std::abs(1.0 - properties_.density / body.density) * gravity_.norm()
+                             : 0.0;
+        // s Δt + a Δt²/2 = reach, solved without cancellation; Δt = reach/s when a = 0.
+        const double root = s + std::sqrt(s * s + 2.0 * a * reach);
+        if (root > 0.0) {
+            speed_per_cell = std::max(speed_per_cell, reach / h / (2.0 * reach / root));
+        }
+    }
+    set_time_step(
+        next_time_step(step_control_, clock_.dt, clock_.time, speed_per_cell, step_history_));
 }
 
 template <int Dim>
@@ -68,6 +109,9 @@ template <int Dim>
 StepReport Simulation<Dim>::advance_unguarded()
 {
     StepReport report;
+    if (config_.max_courant || config_.is_steady) {
+        choose_time_step();
+    }
     begin_step(); // u^n, U^n, ω^n kept; λ* = λ^n already
     if (contacts_) {
         const ScopedPhase timer(times_, Phase::contact);
@@ -83,6 +127,7 @@ StepReport Simulation<Dim>::advance_unguarded()
     }
     clock_.time += clock_.dt;
     ++clock_.step;
+    step_history_.push(report.rate_of_change, report.is_converged);
     track_rest();
     return report;
 }
@@ -201,7 +246,9 @@ void Simulation<Dim>::finish_load()
             }
         }
     }
-    if (clock_.dt != config_.dt) {
+    if (config_.max_courant || config_.is_steady) {
+        set_time_step(clock_.dt); // the controlled step continues from where it was
+    } else if (clock_.dt != config_.dt) {
         set_time_step(config_.dt);
         outer_.is_reusable_assembly() = false; // its coefficients hold the old ρ ΔV / Δt
     }

@@ -12,6 +12,7 @@
 #include "fddem/simulation/case_config.hpp"
 #include "fddem/simulation/outer_iterations.hpp"
 #include "fddem/simulation/step_report.hpp"
+#include "fddem/simulation/time_step_control.hpp"
 
 #include <optional>
 #include <string>
@@ -53,7 +54,8 @@ public:
     StepReport advance();
 
     /// The one place Δt [s] is set: adopts it for the next step, with everything derived from
-    /// it (the momentum multigrid's cycles; a reused momentum assembly is dropped).
+    /// it (the momentum multigrid's cycles, the DEM's sub-step count N_i; a reused momentum
+    /// assembly is dropped). With time.max_courant or time.steady, advance() sets it itself.
     void set_time_step(double dt);
 
     /// True when the end time or the step limit is reached, or (not before time.min_end) the
@@ -179,6 +181,9 @@ private:
         }
         archive("contact.tangential_springs", self.contact_history_.springs);
         archive("rest_since", self.rest_since_);
+        archive("time_step.residual", self.step_history_.residual);
+        archive("time_step.previous_residual", self.step_history_.previous_residual);
+        archive("time_step.is_converged", self.step_history_.is_converged);
         archive("seconds.coupling", self.times_.seconds[static_cast<std::size_t>(Phase::coupling)]);
         archive("seconds.contact", self.times_.seconds[static_cast<std::size_t>(Phase::contact)]);
         archive("seconds.momentum", self.times_.seconds[static_cast<std::size_t>(Phase::momentum)]);
@@ -197,6 +202,8 @@ private:
 
     // The stages of advance(), in its order.
     StepReport advance_unguarded();
+    /// Δt of the next step by time.max_courant or time.steady (time_step_control.hpp).
+    void choose_time_step();
     /// Keeps the level-n state: u^{n−1} ← u^n ← u, U^n ← U, ω^n ← ω (λ* = λ^n already).
     void begin_step();
     /// eq. (18): the DEM sub-steps over the whole step, from the level-n state, with the
@@ -231,6 +238,8 @@ private:
     ContactHistory<Dim> contact_history_;
     OuterIterations<Dim> outer_;
     PhaseTimes times_;
+    TimeStepSettings step_control_;
+    TimeStepHistory step_history_;
     double rest_since_ = -1.0; ///< see at_rest_since() [s]; negative: some body is moving
 
     /// What a failed step must be able to give back (roll_back_step). u^n and u^{n−1} are

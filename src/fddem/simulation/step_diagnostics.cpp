@@ -39,6 +39,18 @@ double reference_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
 }
 
 template <int Dim>
+double max_speed_per_cell(const MacGrid<Dim>& grid, const FaceField<Dim>& u)
+{
+    double result = 0.0;
+    for (int a = 0; a < Dim; ++a) {
+        result = std::max(result, max_over(grid.face_box(a), [&](const Index<Dim>& c) {
+                              return std::abs(u[a](c)) / grid.spacing(a);
+                          }));
+    }
+    return result;
+}
+
+template <int Dim>
 StepChange measure_change(const MacGrid<Dim>& grid, const FluidState<Dim>& state, double dt)
 {
     StepChange result;
@@ -108,6 +120,8 @@ template double reference_velocity<2>(const MacGrid<2>&, const BoundaryCondition
                                       const FaceField<2>&);
 template double reference_velocity<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
                                       const FaceField<3>&);
+template double max_speed_per_cell<2>(const MacGrid<2>&, const FaceField<2>&);
+template double max_speed_per_cell<3>(const MacGrid<3>&, const FaceField<3>&);
 template StepChange measure_change<2>(const MacGrid<2>&, const FluidState<2>&, double);
 template StepChange measure_change<3>(const MacGrid<3>&, const FluidState<3>&, double);
 template std::string locate_non_finite<2>(const MacGrid<2>&, const FluidState<2>&);

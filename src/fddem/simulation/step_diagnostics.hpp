@@ -19,6 +19,10 @@ template <int Dim>
 [[nodiscard]] double reference_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                                         const FaceField<Dim>& u);
 
+/// The largest speed per cell of the fluid, max_d max |u_d| / h_d [1/s] (Courant number / Δt).
+template <int Dim>
+[[nodiscard]] double max_speed_per_cell(const MacGrid<Dim>& grid, const FaceField<Dim>& u);
+
 /// A residual `value` ≥ 0 [m/s] relative to the velocity scale. A fluid at rest (the scale at
 /// reference_velocity()'s floor) under a force has a residual before it has a velocity: it
 /// then counts as 1, not as value/2.2e-308, which overflowed into a false blow-up (a periodic

@@ -322,6 +322,25 @@ TEST(CheckpointRestart, CavityWithReusedAssemblyContinuesBitForBit)
     expect_bit_identical_continuation<2>(hypre, 5, 5);
 }
 
+TEST(CheckpointRestart, AdaptiveTimeStepContinuesBitForBit)
+{
+    // The step length depends on the state and on the last steps (time.max_courant's growth
+    // limit, time.steady's residual history): all of it must come back from the checkpoint.
+    const CaseConfig courant =
+        read_case_string(falling_balls_case(2), "test:adaptive disks", {"time.max_courant=0.2"});
+    {
+        Simulation<2> probe(courant);
+        for (int k = 0; k < 21; ++k) {
+            static_cast<void>(probe.advance());
+        }
+        EXPECT_LT(probe.clock().dt, courant.dt) << "the limit should act by the checkpoint";
+    }
+    expect_bit_identical_continuation<2>(courant, 21, 8);
+    const CaseConfig steady = read_case_string(cavity_case(), "test:steady cavity",
+                                               {"time.steady=true", "time.steady_tolerance=1e-8"});
+    expect_bit_identical_continuation<2>(steady, 5, 5);
+}
+
 class CheckpointFileTest : public ::testing::Test {
 protected:
     void SetUp() override

@@ -12,6 +12,7 @@
 #include <limits>
 
 #include "support/case_builders.hpp"
+#include "support/nans_allowed.hpp"
 
 namespace {
 
@@ -46,28 +47,9 @@ bool same_bits(const fddem::FaceField<2>& a, const fddem::FaceField<2>& b)
     return true;
 }
 
-/// The test makes NaNs on purpose: while it lives, no floating-point traps (test_main.cpp sets
-/// them) on this thread or the OpenMP threads.
-class NansAllowed {
-public:
-    NansAllowed() { set(false); }
-    ~NansAllowed() { set(true); }
-    NansAllowed(const NansAllowed&) = delete;
-    NansAllowed& operator=(const NansAllowed&) = delete;
-
-private:
-    static void set(bool trap)
-    {
-        constexpr int flags = FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW;
-#pragma omp parallel
-        (void)(trap ? feenableexcept(flags) : fedisableexcept(flags));
-        (void)(trap ? feenableexcept(flags) : fedisableexcept(flags));
-    }
-};
-
 TEST(RollBack, AFailedStepLeavesTheStateOfItsStartAndTheNextStepIsTheCleanOne)
 {
-    const NansAllowed nans;
+    const fddem::test::NansAllowed nans;
     const fddem::CaseConfig config = cavity_with_disk();
     Simulation<2> clean(config);
     Simulation<2> failing(config);

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/simulation/time_step_control.hpp"
+
+#include <algorithm>
+
+namespace fddem {
+
+double next_time_step(const TimeStepSettings& settings, double dt, double time,
+                      double speed_per_cell, const TimeStepHistory& history)
+{
+    double next = dt;
+    if (settings.is_steady) {
+        // SER: the step grows as the residual falls (and shrinks if it rises).
+        if (!history.is_converged) {
+            next = dt / settings.max_growth;
+        } else if (history.previous_residual > 0.0 && history.residual > 0.0) {
+            const double ratio = std::clamp(history.previous_residual / history.residual,
+                                            1.0 / settings.max_growth, settings.max_growth);
+            next = dt * ratio;
+        }
+    } else {
+        next = std::min(settings.initial_dt, dt * settings.max_growth);
+    }
+    if (settings.max_courant && speed_per_cell > 0.0) {
+        next = std::min(next, *settings.max_courant / speed_per_cell);
+    }
+    if (settings.end_time && !settings.is_steady) {
+        // Land on the end time rather than step past it or stop short of it (the end test
+        // allows half a step): the last one or two steps share what is left evenly; a remainder
+        // within a hundredth of a step is taken in one.
+        const double left = *settings.end_time - time;
+        if (left > 0.0 && left < next * 1.01) {
+            next = left;
+        } else if (left > 0.0 && left < 2.0 * next) {
+            next = 0.5 * left;
+        }
+    }
+    return next;
+}
+
+} // namespace fddem

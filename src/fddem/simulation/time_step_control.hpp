@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// How long the next time step is. The paper's cases march at the fixed Δt of time.dt; beyond
+/// the paper, two controls (off by default):
+///
+/// - A Courant limit (time.max_courant = C): Δt ≤ C / max(max_d |u_d|/h_d, (|U| + |ω|R)/h), the
+///   fluid's and the bodies' speed per cell at the start of the step, and Δt ≤ time.dt, which is
+///   then the largest and the first step. Δt grows by at most `max_growth` per step, so that a
+///   flow that speeds up and slows down does not make the step oscillate.
+/// - Pseudo-time to a steady state (time.steady): switched evolution relaxation (Mulder & van
+///   Leer 1985, J. Comput. Phys. 59, 232: "SER"), Δt_{n+1} = Δt_n · r_{n−1}/r_n with r the
+///   steady residual max|∂u/∂t| L/U² of the last two steps, the ratio held within
+///   [1/max_growth, max_growth]. The implicit-Euler step becomes a Newton-like step as r → 0
+///   and Δt → ∞; the Courant limit, if given, caps it. A step whose outer iterations did not
+///   converge halves Δt instead: its r = |Δu|/Δt is then no residual of the steady equations
+///   (it falls with 1/Δt for the same Δu, and SER would grow Δt without end; measured on the
+///   Re 1000 cavity: Δt doubled to 250 s with every step unconverged).
+
+#include <optional>
+
+namespace fddem {
+
+struct TimeStepSettings {
+    double initial_dt;                 ///< time.dt [s]
+    std::optional<double> max_courant; ///< time.max_courant
+    bool is_steady = false;            ///< time.steady
+    std::optional<double> end_time;    ///< time.end [s]: the last step ends on it
+    /// Largest growth of Δt from one step to the next (the Courant limit; SER's ratio bound).
+    /// 1.2 for the Courant limit (a common choice, e.g. OpenFOAM's maxDeltaT growth of 1.2);
+    /// 2 for SER, which Mulder & van Leer let grow without bound and which here keeps SIMPLE's
+    /// outer iterations converging from one step to the next.
+    double max_growth = 1.2;
+};
+
+/// The steady residuals r = max|∂u/∂t| L/U² of the last two steps (0: no such step yet), which
+/// SER needs; checkpointed.
+struct TimeStepHistory {
+    double residual = 0.0;          ///< r_n, of the last step
+    double previous_residual = 0.0; ///< r_{n−1}
+    bool is_converged = true;       ///< the last step's outer iterations converged
+
+    /// After a step with residual r.
+    void push(double r, bool converged) noexcept
+    {
+        previous_residual = residual;
+        residual = r;
+        is_converged = converged;
+    }
+};
+
+/// Δt [s] for a step from `time` [s] after one of `dt` [s], given the largest speed per cell
+/// `speed_per_cell` = max |u|/h over the fluid and the bodies [1/s] now. Pure.
+[[nodiscard]] double next_time_step(const TimeStepSettings& settings, double dt, double time,
+                                    double speed_per_cell, const TimeStepHistory& history);
+
+} // namespace fddem

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+// The adaptive time step (time.max_courant) and the pseudo-time march (time.steady).
+
+#include "fddem/simulation/time_step_control.hpp"
+
+#include <gtest/gtest.h>
+
+namespace fddem {
+namespace {
+
+TEST(TimeStepControl, CourantLimitHoldsTheStepToTheGivenCellsPerStep)
+{
+    const TimeStepSettings s{0.1, 0.5, false, std::nullopt, 1.2};
+    // 40 cells per second: C/40 = 0.0125 s, below time.dt.
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.0, 40.0, {}), 0.5 / 40.0);
+    // A slow flow: time.dt is the largest step.
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.0, 0.1, {}), 0.1);
+}
+
+TEST(TimeStepControl, StepGrowsByAtMostTheGrowthFactor)
+{
+    const TimeStepSettings s{1.0, 0.5, false, std::nullopt, 1.2};
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.01, 0.0, 0.0, {}), 0.012);
+}
+
+TEST(TimeStepControl, LastStepLandsOnTheEndTime)
+{
+    const TimeStepSettings s{0.1, 0.5, false, 1.0, 1.2};
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.95, 1.0, {}), 1.0 - 0.95);
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.5, 1.0, {}), 0.1);
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.85, 1.0, {}), 0.075); // two equal last steps
+}
+
+TEST(TimeStepControl, SerFollowsTheResidualWithinItsBounds)
+{
+    const TimeStepSettings s{0.01, std::nullopt, true, std::nullopt, 2.0};
+    TimeStepHistory h;
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.01, 0.0, 1.0, h), 0.01); // no history yet
+    h.push(1e-2, true);
+    h.push(0.8e-2, true); // fell by 1.25: Δt grows by 1.25
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.01, 0.0, 1.0, h), 0.0125);
+    h.push(1e-4, true); // fell by 80: at most 2×
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.01, 0.0, 1.0, h), 0.02);
+    h.push(1e-2, true); // rose by 100: at most halved
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.01, 0.0, 1.0, h), 0.005);
+    h.push(1e-6, false); // fell, but the step did not converge: halved
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.01, 0.0, 1.0, h), 0.005);
+}
+
+TEST(TimeStepControl, SerStepIsCappedByTheCourantLimit)
+{
+    const TimeStepSettings s{0.01, 20.0, true, std::nullopt, 2.0};
+    TimeStepHistory h;
+    h.push(1.0, true);
+    h.push(0.5, true);
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.4, 0.0, 100.0, h), 0.2); // 20 cells / 100 per s
+}
+
+} // namespace
+} // namespace fddem
