@@ -23,8 +23,8 @@ fs::path default_run_directory(const RunOptions& options, const CaseConfig& conf
     if (!options.output_directory.empty()) {
         return options.output_directory;
     }
-    if (!config.output_directory.empty()) {
-        return config.output_directory;
+    if (!config.output.directory.empty()) {
+        return config.output.directory;
     }
     const fs::path file(options.case_file);
     // cases/<…>/<name>/case.toml runs into runs/<name>.
@@ -55,7 +55,7 @@ int restart_command(const RunOptions& options)
                          "checkpoint.step_interval steps, at its end and when interrupted)");
     }
     const bool has_overrides = !options.overrides.empty();
-    if (config.dimension == 2) {
+    if (config.domain.dimension == 2) {
         Run<2> run(config, directory, options);
         return run.resume(has_overrides);
     }
@@ -72,7 +72,7 @@ int run_command(const RunOptions& options)
     }
     const CaseConfig config = read_case(options.case_file, options.overrides);
     const fs::path directory = default_run_directory(options, config);
-    if (config.dimension == 2) {
+    if (config.domain.dimension == 2) {
         Run<2> run(config, directory, options);
         return run.start(options.force);
     }

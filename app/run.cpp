@@ -8,6 +8,7 @@
 #include "fddem/grid/sampling.hpp"
 #include "fddem/io/atomic_file.hpp"
 #include "fddem/io/build_info.hpp"
+#include "fddem/io/case_names.hpp"
 #include "fddem/io/checkpoint.hpp"
 #include "fddem/io/run_directory.hpp"
 #include "fddem/io/summary.hpp"
@@ -41,8 +42,8 @@ template <int Dim>
 Run<Dim>::Run(const CaseConfig& config, fs::path directory, const RunOptions& options)
     : config_(config), sim_(config), directory_(std::move(directory)),
       progress_(stderr, !options.quiet && ::isatty(STDERR_FILENO) != 0,
-                options.quiet ? std::numeric_limits<long>::max() : config.log_interval,
-                config.end_time),
+                options.quiet ? std::numeric_limits<long>::max() : config.output.log_interval,
+                config.time.end),
       pvd_(directory_ / "fields.pvd"), particles_pvd_(directory_ / "particles.pvd")
 {
 }
@@ -92,9 +93,9 @@ int Run<Dim>::start(bool force)
     }
     report_derived();
     write_fields();
-    record_.next_particle_time = config_.particle_interval;
-    record_.next_field_time = config_.field_interval;
-    record_.next_checkpoint_time = config_.checkpoint_time_interval;
+    record_.next_particle_time = config_.output.particle_interval;
+    record_.next_field_time = config_.output.field_interval;
+    record_.next_checkpoint_time = config_.checkpoint.time_interval;
     return step_to_end();
 }
 
@@ -129,12 +130,12 @@ int Run<Dim>::step_to_end()
             progress_.update(clock.step, clock.time, report.outer_iterations);
             if (particles_ && clock.time >= record_.next_particle_time - 0.5 * clock.dt) {
                 write_particles();
-                record_.next_particle_time += config_.particle_interval;
+                record_.next_particle_time += config_.output.particle_interval;
             }
-            if (config_.field_interval > 0.0 &&
+            if (config_.output.field_interval > 0.0 &&
                 clock.time >= record_.next_field_time - 0.5 * clock.dt) {
                 write_fields();
-                record_.next_field_time += config_.field_interval;
+                record_.next_field_time += config_.output.field_interval;
             }
             is_finished = sim_.is_finished(report);
             signal = is_finished ? 0 : pending_interrupt();
@@ -177,9 +178,9 @@ int Run<Dim>::step_to_end()
     close_outputs("completed");
     const auto rest = sim_.at_rest_since();
     const std::string settled =
-        rest && config_.rest_speed
+        rest && config_.time.rest_speed
             ? fmt::format(" (every free body slower than time.rest_speed = {:g} since t = {:g} s)",
-                          *config_.rest_speed, *rest)
+                          *config_.time.rest_speed, *rest)
             : std::string();
     std::fprintf(stderr,
                  "fddem: %s: %ld steps to t = %.6g s%s, %ld outer iterations, %.2f s; results "
@@ -207,9 +208,9 @@ template <int Dim>
 bool Run<Dim>::is_checkpoint_due()
 {
     const Clock& clock = sim_.clock();
-    const long every = config_.checkpoint_step_interval;
+    const long every = config_.checkpoint.step_interval;
     bool is_due = every > 0 && clock.step % every == 0;
-    const double interval = config_.checkpoint_time_interval;
+    const double interval = config_.checkpoint.time_interval;
     if (interval > 0.0 && clock.time >= record_.next_checkpoint_time - 0.5 * clock.dt) {
         is_due = true;
         while (record_.next_checkpoint_time < clock.time + 0.5 * clock.dt) {
@@ -240,7 +241,7 @@ void Run<Dim>::write_checkpoint_now(std::size_t n_frames)
     fs::create_directories(checkpoint_directory(directory_));
     last_checkpoint_ = checkpoint_path(directory_, sim_.clock().step);
     write_checkpoint(last_checkpoint_, sim_, record_);
-    prune_checkpoints(directory_, config_.checkpoint_keep);
+    prune_checkpoints(directory_, config_.checkpoint.keep);
 }
 
 template <int Dim>
@@ -286,36 +287,39 @@ void Run<Dim>::write_particles()
 template <int Dim>
 void Run<Dim>::report_derived()
 {
-    if (config_.contact_impact_velocity > 0.0) {
+    const ContactConfig& contact = config_.contact;
+    const ContactDerived& derived = contact.derived;
+    if (derived.impact_velocity > 0.0) {
         progress_.message(fmt::format(
             "fddem: contact ({}, {} coupling): a wall collision of the lightest body at "
             "impact speed {:.3g} lasts {:.3g} s (undamped) with restitution {:.4g}; {} DEM "
             "sub-steps per time step",
-            config_.contact_model, config_.contact_coupling, config_.contact_impact_velocity,
-            config_.contact_duration, config_.contact_restitution, config_.contact_substeps));
+            name_of(contact.model), name_of(contact.coupling), derived.impact_velocity,
+            derived.duration, derived.restitution, derived.substeps));
     }
-    if (config_.contact_stiffness > 0.0) {
+    if (derived.stiffness > 0.0) {
         progress_.message(fmt::format(
             "fddem: contact ({} coupling): k = {:.6g}, c = {:.6g}; a wall collision of the "
             "lightest body lasts {:.3g} s with restitution {:.4g}; {} DEM sub-steps per "
             "time step",
-            config_.contact_coupling, config_.contact_stiffness, config_.contact_damping,
-            config_.contact_duration, config_.contact_restitution, config_.contact_substeps));
+            name_of(contact.coupling), derived.stiffness, derived.damping, derived.duration,
+            derived.restitution, derived.substeps));
     }
-    if (!config_.reynolds) {
+    const NondimensionalConfig& nondimensional = config_.nondimensional;
+    if (!nondimensional.reynolds) {
         return;
     }
     std::string text =
-        fmt::format("fddem: derived from [nondimensional] (Re = {:g}", *config_.reynolds);
-    if (config_.density_ratio) {
-        text +=
-            fmt::format(", density ratio {:g}, W/D = {:g}): viscosity {:.6g}, body "
-                        "density {:.6g}, gravity {:.6g}, wall factor K = {:.6f}",
-                        *config_.density_ratio, config_.size[0] / config_.bodies.front().diameter,
-                        config_.viscosity, config_.bodies.front().density, -config_.gravity[1],
-                        config_.wall_factor);
+        fmt::format("fddem: derived from [nondimensional] (Re = {:g}", *nondimensional.reynolds);
+    if (nondimensional.density_ratio) {
+        text += fmt::format(", density ratio {:g}, W/D = {:g}): viscosity {:.6g}, body "
+                            "density {:.6g}, gravity {:.6g}, wall factor K = {:.6f}",
+                            *nondimensional.density_ratio,
+                            config_.domain.size[0] / config_.bodies.front().diameter,
+                            config_.fluid.viscosity, config_.bodies.front().density,
+                            -config_.fluid.gravity[1], nondimensional.wall_factor);
     } else {
-        text += fmt::format("): viscosity {:.6g}", config_.viscosity);
+        text += fmt::format("): viscosity {:.6g}", config_.fluid.viscosity);
     }
     progress_.message(text);
 }
@@ -345,7 +349,7 @@ void Run<Dim>::watch(const StepReport& report)
                 "warning: step {} (t = {:g} s): SIMPLE not converged in {} outer iterations "
                 "(mass residual {:.2e}, momentum residual {:.2e}, tolerance {:g}){}",
                 sim_.clock().step, sim_.clock().time, report.outer_iterations, report.mass_residual,
-                report.momentum_residual, config_.tolerance,
+                report.momentum_residual, config_.simple.tolerance,
                 r.unconverged_steps == max_reported_unconverged ? "; further ones only counted"
                                                                 : ""));
         }
@@ -413,7 +417,7 @@ void Run<Dim>::write_samples()
         columns.emplace_back(velocities[d]);
     }
     columns.emplace_back("p");
-    for (const LineSample& line : config_.lines) {
+    for (const LineSample& line : config_.output.lines) {
         Vec<Dim> from;
         Vec<Dim> to;
         for (int d = 0; d < Dim; ++d) {
@@ -464,17 +468,17 @@ void Run<Dim>::write_summary(const std::string& status)
         summary.set("markers_per_body",
                     static_cast<long>(sim_.bodies().front().coupling.markers.size()));
         summary.set("last_rigid_defect", last.rigid_defect);
-        summary.set("contact_model", config_.contact_model);
+        summary.set("contact_model", name_of(config_.contact.model));
         summary.set("max_overlap", record_.max_overlap);
         summary.set("max_relative_overlap", record_.max_relative_overlap);
         summary.set("max_overlap_time", record_.max_overlap_time);
         if (const auto since = sim_.at_rest_since()) {
             summary.set("at_rest_since", *since); // every free body below time.rest_speed
         }
-        if (config_.reynolds) {
-            summary.set("characteristic_velocity", config_.characteristic_velocity);
-            summary.set("characteristic_time",
-                        config_.bodies.front().diameter / config_.characteristic_velocity);
+        if (config_.nondimensional.reynolds) {
+            const double velocity = config_.nondimensional.velocity;
+            summary.set("characteristic_velocity", velocity);
+            summary.set("characteristic_time", config_.bodies.front().diameter / velocity);
         }
     }
     summary.write(directory_ / "summary.json");

@@ -31,14 +31,14 @@ struct Damaged {
 std::pair<std::string, std::string> end_reason(const CaseConfig& config, const Clock& clock,
                                                std::optional<double> at_rest_since)
 {
-    if (clock.step >= config.max_steps) {
-        return {fmt::format("time.max_steps = {}", config.max_steps), "time.max_steps=…"};
+    if (clock.step >= config.time.max_steps) {
+        return {fmt::format("time.max_steps = {}", config.time.max_steps), "time.max_steps=…"};
     }
-    if (config.end_time && clock.time >= *config.end_time - 0.5 * clock.dt) {
-        return {fmt::format("time.end = {:g} s", *config.end_time), "time.end=…"};
+    if (config.time.end && clock.time >= *config.time.end - 0.5 * clock.dt) {
+        return {fmt::format("time.end = {:g} s", *config.time.end), "time.end=…"};
     }
     // A settled or steady run stays so: only a later time.min_end lets it go on.
-    if (config.rest_speed && at_rest_since) {
+    if (config.time.rest_speed && at_rest_since) {
         return {fmt::format("every free body has been at rest since t = {:g} s (time.rest_speed)",
                             *at_rest_since),
                 "time.min_end=…"};

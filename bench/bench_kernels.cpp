@@ -95,7 +95,7 @@ void momentum_vcycle(benchmark::State& state)
     per_cell(state, n);
 }
 
-void poisson(benchmark::State& state, const char* kind)
+void poisson(benchmark::State& state, PoissonSolverKind kind)
 {
     const int n = static_cast<int>(state.range(0));
     const MacGrid<2> grid({n, n}, Vec<2>::Zero(), Vec<2>::Ones());
@@ -171,7 +171,7 @@ BENCHMARK_CAPTURE(contact_pairs, brute_force, true)
 BENCHMARK(momentum_assembly)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond);
 BENCHMARK(momentum_sweep)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond);
 BENCHMARK(momentum_vcycle)->RangeMultiplier(2)->Range(64, 512)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(poisson, fft, "fft")
+BENCHMARK_CAPTURE(poisson, fft, PoissonSolverKind::fft)
     ->RangeMultiplier(2)
     ->Range(64, 512)
     ->Unit(benchmark::kMillisecond);

@@ -11,19 +11,19 @@ inline CaseConfig cavity_config(int n, double reynolds, double dt, double end_ti
 {
     CaseConfig c;
     c.source_file = "test:cavity";
-    c.dimension = 2;
-    c.origin = {0.0, 0.0};
-    c.size = {1.0, 1.0};
-    c.cells = {n, n};
-    c.periodic = {false, false};
-    c.wall_velocity = {{std::vector<double>{0.0, 0.0}, std::vector<double>{0.0, 0.0}},
-                       {std::vector<double>{0.0, 0.0}, std::vector<double>{1.0, 0.0}}};
-    c.density = 1.0;
-    c.viscosity = 1.0 / reynolds;
-    c.gravity = {0.0, 0.0};
-    c.body_force = {0.0, 0.0};
-    c.dt = dt;
-    c.end_time = end_time;
+    c.domain.dimension = 2;
+    c.domain.origin = {0.0, 0.0};
+    c.domain.size = {1.0, 1.0};
+    c.domain.cells = {n, n};
+    c.domain.periodic = {false, false};
+    c.walls.velocity = {{std::vector<double>{0.0, 0.0}, std::vector<double>{0.0, 0.0}},
+                        {std::vector<double>{0.0, 0.0}, std::vector<double>{1.0, 0.0}}};
+    c.fluid.density = 1.0;
+    c.fluid.viscosity = 1.0 / reynolds;
+    c.fluid.gravity = {0.0, 0.0};
+    c.fluid.body_force = {0.0, 0.0};
+    c.time.dt = dt;
+    c.time.end = end_time;
     return c;
 }
 

@@ -27,7 +27,7 @@ double drag_coefficient(int refinement, int n_rings)
     config.bodies.front().n_rings = n_rings;
     Simulation<2> sim(config);
     test::run_to_end(sim);
-    return sim.bodies().front().force[1] / (config.viscosity * 1.0); // U = 1, drag along +y
+    return sim.bodies().front().force[1] / (config.fluid.viscosity * 1.0); // U = 1, drag along +y
 }
 
 TEST(TowedCylinder, DragApproachesFaxenWithRefinement)

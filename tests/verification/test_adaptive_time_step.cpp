@@ -20,14 +20,14 @@ namespace {
 TEST(AdaptiveTimeStep, StepFollowsTheCourantLimit)
 {
     CaseConfig config = test::cavity_config(32, 100.0, 0.1, 2.0);
-    config.max_courant = 0.5;
+    config.time.max_courant = 0.5;
     Simulation<2> sim(config);
     const double h = sim.grid().spacing(0);
-    double smallest = config.dt;
+    double smallest = config.time.dt;
     while (!sim.is_finished(sim.advance())) {
         const double dt = sim.clock().dt;
         smallest = std::min(smallest, dt);
-        EXPECT_LE(dt, config.dt);
+        EXPECT_LE(dt, config.time.dt);
         // At the step's start the fluid moved at most as fast as the lid (1 m/s): Δt ≤ C h / 1.
         EXPECT_LE(dt, 0.5 * h * (1.0 + 1e-12));
     }
@@ -99,9 +99,9 @@ TEST(AdaptiveTimeStep, ARunThatBlowsUpAtTheFixedStepRunsWithTheLimit)
 TEST(AdaptiveTimeStep, SteadyMarchReachesTheTimeMarchedSteadyStateInFewSteps)
 {
     CaseConfig marched = test::cavity_config(32, 100.0, 0.03125, 100.0);
-    marched.steady_tolerance = 1e-6;
+    marched.time.steady_tolerance = 1e-6;
     CaseConfig pseudo = marched;
-    pseudo.is_steady = true;
+    pseudo.time.is_steady = true;
     Simulation<2> a(marched);
     while (!a.is_finished(a.advance())) {
     }

@@ -61,7 +61,7 @@ TEST(DiskInBox, RunStopsOnceTheDiskHasSettled)
     std::printf("first contact t = %.3f, at rest since t = %.3f, stopped at t = %.3f\n",
                 landing.first_contact, since, sim.clock().time);
     EXPECT_GT(since, landing.first_contact); // not while it was still falling
-    EXPECT_NEAR(sim.clock().time, since + 0.05, 0.5 * config.dt);
+    EXPECT_NEAR(sim.clock().time, since + 0.05, 0.5 * config.time.dt);
     EXPECT_LT(sim.clock().time, 1.2);
     // It stopped because the disk rests on the floor, one radius up.
     const Particle<2>& body = sim.bodies().front();

@@ -58,7 +58,7 @@ TEST(LidDrivenCavity, Re100At64MatchesGhiaCentrelines)
 {
     const int n = 64;
     CaseConfig config = test::cavity_config(n, 100.0, 1.0 / 64, 100.0);
-    config.steady_tolerance = 1e-5;
+    config.time.steady_tolerance = 1e-5;
     Simulation<2> sim(config);
     StepReport report;
     do {

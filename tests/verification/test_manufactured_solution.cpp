@@ -58,10 +58,10 @@ struct Errors {
 Errors solve_on(int n)
 {
     CaseConfig config = test::cavity_config(n, 1.0 / mu, 0.02, 50.0);
-    config.wall_velocity[1][1] = {0.0, 0.0}; // no lid: all walls at rest
-    config.steady_tolerance = 1e-10;
-    config.tolerance = 1e-10;
-    config.momentum_sweeps = 4;
+    config.walls.velocity[1][1] = {0.0, 0.0}; // no lid: all walls at rest
+    config.time.steady_tolerance = 1e-10;
+    config.simple.tolerance = 1e-10;
+    config.simple.momentum_sweeps = 4;
     Simulation<2> sim(config);
     const auto& grid = sim.grid();
     for_each_index(grid.face_box(0), [&](const Index<2>& c) {

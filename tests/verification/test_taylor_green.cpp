@@ -34,10 +34,10 @@ TEST(TaylorGreen, DecayRateWithinOnePercentAt64)
     const double nu = 0.01;
     const double end = 10.0;
     CaseConfig config = test::cavity_config(64, 1.0 / nu, 0.05, end);
-    config.size = {length, length};
-    config.periodic = {true, true};
-    config.wall_velocity.clear();
-    config.tolerance = 1e-8;
+    config.domain.size = {length, length};
+    config.domain.periodic = {true, true};
+    config.walls.velocity.clear();
+    config.simple.tolerance = 1e-8;
     Simulation<2> sim(config);
     const auto& grid = sim.grid();
     for_each_index(grid.face_box(0), [&](const Index<2>& c) {

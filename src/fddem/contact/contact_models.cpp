@@ -27,12 +27,13 @@ std::optional<AnyContactModel> make_none(const ContactModelInput& /*input*/)
 }
 
 constexpr std::array registry{
-    ContactModelEntry{"linear", "paper eq. (18): F = kα + cα̇", make_linear},
-    ContactModelEntry{"hertz_mindlin",
+    ContactModelEntry{ContactModelKind::linear, "linear", "paper eq. (18): F = kα + cα̇",
+                      make_linear},
+    ContactModelEntry{ContactModelKind::hertz_mindlin, "hertz_mindlin",
                       "Hertz (Johnson 1985), Tsuji et al. (1992) dashpot with Antypov & Elliott "
                       "(2011) restitution, Mindlin (1949) tangential stiffness",
                       make_hertz_mindlin},
-    ContactModelEntry{"none", "no collisions", make_none},
+    ContactModelEntry{ContactModelKind::none, "none", "no collisions", make_none},
 };
 
 auto side_order(const PairSide& s)
@@ -59,15 +60,15 @@ std::vector<std::string> contact_model_names()
     return names;
 }
 
-std::optional<AnyContactModel> make_contact_model(std::string_view name,
+std::optional<AnyContactModel> make_contact_model(ContactModelKind kind,
                                                   const ContactModelInput& input)
 {
     for (const ContactModelEntry& entry : registry) {
-        if (entry.name == name) {
+        if (entry.kind == kind) {
             return entry.make(input);
         }
     }
-    throw InternalError("make_contact_model: no contact model named '" + std::string(name) + "'");
+    throw InternalError("make_contact_model: a contact model kind without a registry row");
 }
 
 double shortest_collision(const AnyContactModel& model, std::span<const PairSide> bodies,

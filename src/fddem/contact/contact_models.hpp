@@ -24,7 +24,15 @@ struct ContactModelInput {
     double reference_mass = 1.0; ///< lightest movable body [kg]: the linear model's checks
 };
 
+/// The models a case can name in contact.model.
+enum class ContactModelKind { linear, hertz_mindlin, none };
+
+/// How DEM and the fluid update share a body in contact: the paper's (DEM replaces (13)–(14) and
+/// (17) while in contact) or additive (the mean contact force is added to (13)–(14)).
+enum class ContactCoupling { paper, additive };
+
 struct ContactModelEntry {
+    ContactModelKind kind;
     std::string_view name;     ///< the case-file name
     std::string_view citation; ///< where the force law comes from
     /// The model, or nothing for a case without collisions.
@@ -33,9 +41,8 @@ struct ContactModelEntry {
 
 [[nodiscard]] std::span<const ContactModelEntry> contact_models();
 [[nodiscard]] std::vector<std::string> contact_model_names();
-/// The model registered as `name`; throws InternalError for a name not in the registry (the
-/// case reader has already checked it against contact_model_names()).
-[[nodiscard]] std::optional<AnyContactModel> make_contact_model(std::string_view name,
+/// The model registered as `kind`.
+[[nodiscard]] std::optional<AnyContactModel> make_contact_model(ContactModelKind kind,
                                                                 const ContactModelInput& input);
 
 /// The shortest undamped binary collision [s] at impact speed `impact_speed` [m/s] among `bodies`

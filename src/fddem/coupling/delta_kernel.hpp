@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <concepts>
-#include <string>
 #include <variant>
 
 namespace fddem {
@@ -70,7 +69,9 @@ static_assert(DeltaKernel<HatKernel> && DeltaKernel<RomaPeskin3Kernel> &&
 /// Chosen at run time (case key coupling.kernel), dispatched once per body loop.
 using AnyKernel = std::variant<HatKernel, RomaPeskin3Kernel, Peskin4Kernel>;
 
-/// "hat", "roma3", "peskin4" → kernel; throws InputError otherwise.
-[[nodiscard]] AnyKernel kernel_from_name(const std::string& name);
+/// The kernels a case can choose (coupling.kernel).
+enum class KernelKind { hat, roma3, peskin4 };
+
+[[nodiscard]] AnyKernel make_kernel(KernelKind kind);
 
 } // namespace fddem

@@ -118,7 +118,7 @@ double inflow_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& 
                        int side, const Vec<Dim>& x) noexcept
 {
     double speed = bc.inflow.speed;
-    if (bc.inflow.is_parabolic) {
+    if (bc.inflow.shape == InflowShape::parabolic) {
         for (int t = 0; t < Dim; ++t) {
             if (t == axis || bc.periodic(t)) {
                 continue;

@@ -27,8 +27,10 @@ enum class BoundaryKind { wall, inflow, outflow };
 /// The inflow's normal velocity: `speed` [m/s] everywhere (uniform), or speed × Π 4 s (1 − s)
 /// over the walled transverse axes, s the fraction across the box (parabolic: `speed` is the
 /// centre-line maximum; the mean is 2/3 of it in 2D).
+enum class InflowShape { uniform, parabolic };
+
 struct InflowProfile {
-    bool is_parabolic = false;
+    InflowShape shape = InflowShape::uniform;
     double speed = 0.0; ///< [m/s], into the box
 };
 

@@ -464,13 +464,15 @@ double time_term_share(const MacGrid<Dim>& grid, const FluidProperties& fluid, d
     return time / (time + links);
 }
 
-int momentum_cycles_for(const std::string& solver, int cycles, double time_share)
+int momentum_cycles_for(MomentumSolver solver, int cycles, double time_share)
 {
-    if (solver == "gauss_seidel") {
+    switch (solver) {
+    case MomentumSolver::gauss_seidel:
         return 0;
-    }
-    if (solver == "multigrid") {
+    case MomentumSolver::multigrid:
         return cycles;
+    case MomentumSolver::automatic:
+        break;
     }
     return time_share < multigrid_time_share ? cycles : 0;
 }

@@ -8,7 +8,6 @@
 #include "fddem/linsolve/aggregation_multigrid.hpp"
 
 #include <array>
-#include <string>
 
 namespace fddem {
 
@@ -60,9 +59,12 @@ template <int Dim>
 /// Δt = h, 0.16, 2× faster; the cavity at Δt = h/2, 0.28, and the DKT case, 0.73, slower).
 inline constexpr double multigrid_time_share = 0.2;
 
-/// The V-cycles per outer iteration for `solver` ("auto", "multigrid" or "gauss_seidel"):
-/// `cycles`, or 0 (sweeps alone); "auto" chooses the multigrid below multigrid_time_share.
-[[nodiscard]] int momentum_cycles_for(const std::string& solver, int cycles, double time_share);
+/// How the momentum equations are solved: V-cycles smoothed by Gauss–Seidel (multigrid),
+/// sweeps alone (gauss_seidel), or the multigrid below multigrid_time_share (automatic).
+enum class MomentumSolver { automatic, multigrid, gauss_seidel };
+
+/// The V-cycles per outer iteration for `solver`: `cycles`, or 0 (sweeps alone).
+[[nodiscard]] int momentum_cycles_for(MomentumSolver solver, int cycles, double time_share);
 
 /// Assembles eqs. (7)–(8) for component `axis` about the current iterate `state.u` (Picard:
 /// fluxes from the latest iterate), implicit Euler in time. Requires the ghosts of state.u

@@ -3,7 +3,11 @@
 /// Reads a case file (TOML) against the schema (io/case_schema.cpp) into a CaseConfig.
 /// Every problem — syntax, unknown or misspelt key, wrong type, out of range, missing,
 /// contradictory — throws InputError naming the file, the line and the key, before any work.
+/// The steps, one file each: the TOML document and --set (io/case_document.cpp), each key
+/// against the schema (io/case_keys.cpp), the keys together (io/case_checks.cpp), and the
+/// values fddem derives (io/nondimensional_derivation.cpp, io/contact_derivation.cpp).
 
+#include "fddem/io/did_you_mean.hpp"
 #include "fddem/simulation/case_config.hpp"
 
 #include <string>
@@ -20,9 +24,5 @@ namespace fddem {
 /// The same from text; `source_name` names it in messages.
 [[nodiscard]] CaseConfig read_case_string(std::string_view text, const std::string& source_name,
                                           const std::vector<std::string>& overrides = {});
-
-/// Levenshtein distance, for "did you mean" suggestions (a dozen lines: no Debian library
-/// offers it for C++).
-[[nodiscard]] std::size_t edit_distance(std::string_view a, std::string_view b);
 
 } // namespace fddem

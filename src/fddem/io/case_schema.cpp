@@ -1,12 +1,19 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/io/case_schema.hpp"
 
-#include "fddem/contact/contact_models.hpp"
+#include "fddem/io/contact_derivation.hpp"
+#include "fddem/io/key_binding.hpp"
 
 #include <fmt/format.h>
 
 namespace fddem {
 namespace {
+
+using detail::body_key;
+using detail::bound;
+using detail::bound_in;
+using detail::entry_of;
+using detail::line_key;
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
@@ -37,37 +44,58 @@ KeySpec positive(KeySpec spec)
     return ranged(std::move(spec), 0.0, inf, true, false);
 }
 
-KeySpec choice(KeySpec spec, std::vector<std::string> choices)
+/// The velocity of one wall, [walls] x_low…z_high.
+auto wall_velocity(std::size_t axis, std::size_t side)
 {
-    spec.choices = std::move(choices);
-    return spec;
+    return [axis, side](CaseConfig& config, std::size_t /*entry*/) -> std::vector<double>& {
+        return entry_of(config.walls.velocity, axis).at(side);
+    };
+}
+
+/// What one side is, [boundaries] x_low…z_high.
+auto boundary_kind(std::size_t axis, std::size_t side)
+{
+    return [axis, side](CaseConfig& config, std::size_t /*entry*/) -> BoundaryKind& {
+        return entry_of(config.boundaries, axis).at(side);
+    };
 }
 
 /// The surface keys of [[bodies]] and [walls]: each falls back to the [contact] key of the
-/// same name (`whose`: "body" or "walls").
+/// same name (`whose`: "body" or "walls"). `surface(config, entry)` is where they go.
+template <class Surface>
 void add_material_keys(std::vector<KeySpec>& s, const std::string& section,
-                       const std::string& whose)
+                       const std::string& whose, Surface surface)
 {
     const std::string fallback = "none";
-    s.push_back(positive(key(section, "young_modulus", KeyType::real, "Pa", fallback,
-                             "Hertz–Mindlin: Young's modulus E of the " + whose +
-                                 "; default contact.young_modulus.")));
-    s.push_back(ranged(
-        key(section, "poisson_ratio", KeyType::real, "", fallback,
-            "Hertz–Mindlin: Poisson ratio ν of the " + whose + "; default contact.poisson_ratio."),
-        0.0, 0.5, false, true));
-    s.push_back(ranged(
-        key(section, "friction", KeyType::real, "", fallback,
-            "Sliding friction coefficient μ_s of the " + whose + "; default contact.friction."),
-        0.0, inf, false, false));
-    s.push_back(ranged(key(section, "rolling_friction", KeyType::real, "", fallback,
-                           "Rolling friction coefficient μ_r of the " + whose +
-                               "; default contact.rolling_friction."),
-                       0.0, inf, false, false));
-    s.push_back(ranged(key(section, "restitution", KeyType::real, "", fallback,
-                           "Hertz–Mindlin: restitution coefficient e of the " + whose +
-                               "; default contact.restitution."),
-                       0.0, 1.0, true, false));
+    s.push_back(bound_in(surface,
+                         positive(key(section, "young_modulus", KeyType::real, "Pa", fallback,
+                                      "Hertz–Mindlin: Young's modulus E of the " + whose +
+                                          "; default contact.young_modulus.")),
+                         &SurfaceKeys::young_modulus));
+    s.push_back(bound_in(surface,
+                         ranged(key(section, "poisson_ratio", KeyType::real, "", fallback,
+                                    "Hertz–Mindlin: Poisson ratio ν of the " + whose +
+                                        "; default contact.poisson_ratio."),
+                                0.0, 0.5, false, true),
+                         &SurfaceKeys::poisson_ratio));
+    s.push_back(bound_in(surface,
+                         ranged(key(section, "friction", KeyType::real, "", fallback,
+                                    "Sliding friction coefficient μ_s of the " + whose +
+                                        "; default contact.friction."),
+                                0.0, inf, false, false),
+                         &SurfaceKeys::friction));
+    s.push_back(bound_in(surface,
+                         ranged(key(section, "rolling_friction", KeyType::real, "", fallback,
+                                    "Rolling friction coefficient μ_r of the " + whose +
+                                        "; default contact.rolling_friction."),
+                                0.0, inf, false, false),
+                         &SurfaceKeys::rolling_friction));
+    s.push_back(bound_in(surface,
+                         ranged(key(section, "restitution", KeyType::real, "", fallback,
+                                    "Hertz–Mindlin: restitution coefficient e of the " + whose +
+                                        "; default contact.restitution."),
+                                0.0, 1.0, true, false),
+                         &SurfaceKeys::restitution));
 }
 
 } // namespace
@@ -78,258 +106,345 @@ std::vector<KeySpec> case_schema()
     const std::string none;
     std::vector<KeySpec> s;
     s.push_back(
-        key("case", "title", T::string, none, "\"\"", "A one-line description of the case."));
+        bound(key("case", "title", T::string, none, "\"\"", "A one-line description of the case."),
+              &CaseConfig::title));
 
-    s.push_back(key("domain", "origin", T::real_vector, "m", "zeros", "Lower corner of the box."));
-    s.push_back(positive(key("domain", "size", T::real_vector, "m", std::nullopt,
-                             "Side lengths of the box; 2 entries make a 2D case, 3 a 3D one.")));
-    s.push_back(ranged(key("domain", "cells", T::integer_vector, none, std::nullopt,
-                           "Cells along each axis (the grid is uniform; equal spacing per axis "
-                           "is recommended)."),
-                       4, 1000000, false, false));
-    s.push_back(key("domain", "periodic", T::boolean_vector, none, "false",
-                    "Whether each axis is periodic (else walled on both sides)."));
+    s.push_back(
+        bound(key("domain", "origin", T::real_vector, "m", "zeros", "Lower corner of the box."),
+              &CaseConfig::domain, &DomainConfig::origin));
+    s.push_back(
+        bound(positive(key("domain", "size", T::real_vector, "m", std::nullopt,
+                           "Side lengths of the box; 2 entries make a 2D case, 3 a 3D one.")),
+              &CaseConfig::domain, &DomainConfig::size));
+    s.push_back(
+        bound(ranged(key("domain", "cells", T::integer_vector, none, std::nullopt,
+                         "Cells along each axis (the grid is uniform; equal spacing per axis "
+                         "is recommended)."),
+                     4, 1000000, false, false),
+              &CaseConfig::domain, &DomainConfig::cells));
+    s.push_back(bound(key("domain", "periodic", T::boolean_vector, none, "false",
+                          "Whether each axis is periodic (else walled on both sides)."),
+                      &CaseConfig::domain, &DomainConfig::periodic));
 
-    for (const char* wall : {"x_low", "x_high", "y_low", "y_high", "z_low", "z_high"}) {
-        s.push_back(key("walls", wall, T::real_vector, "m/s", "zeros",
-                        fmt::format("Velocity of the {} wall; only tangential components may be "
-                                    "non-zero (a sliding wall, e.g. a lid).",
-                                    wall)));
+    for (std::size_t axis = 0; axis < side_names.size(); ++axis) {
+        for (std::size_t side = 0; side < 2; ++side) {
+            const std::string wall = side_names.at(axis).at(side);
+            s.push_back(bound_in(
+                wall_velocity(axis, side),
+                key("walls", wall, T::real_vector, "m/s", "zeros",
+                    fmt::format("Velocity of the {} wall; only tangential components may be "
+                                "non-zero (a sliding wall, e.g. a lid).",
+                                wall))));
+        }
     }
-    add_material_keys(s, "walls", "walls (all share one set)");
+    add_material_keys(s, "walls", "walls (all share one set)",
+                      [](CaseConfig& config, std::size_t /*entry*/) -> SurfaceKeys& {
+                          return config.walls.surface;
+                      });
 
-    for (const char* side : {"x_low", "x_high", "y_low", "y_high", "z_low", "z_high"}) {
-        s.push_back(choice(key("boundaries", side, T::string, none, "\"wall\"",
-                               fmt::format("What the {} side of a non-periodic axis is: a wall "
-                                           "(no slip; [walls] sets its velocity), an inflow "
-                                           "([inflow] sets its velocity) or an outflow (zero "
-                                           "normal gradient, carrying the inflow's volume flux).",
-                                           side)),
-                           {"wall", "inflow", "outflow"}));
+    for (std::size_t axis = 0; axis < side_names.size(); ++axis) {
+        for (std::size_t side = 0; side < 2; ++side) {
+            const std::string name = side_names.at(axis).at(side);
+            s.push_back(
+                bound_in(boundary_kind(axis, side),
+                         key("boundaries", name, T::string, none, "\"wall\"",
+                             fmt::format("What the {} side of a non-periodic axis is: a wall "
+                                         "(no slip; [walls] sets its velocity), an inflow "
+                                         "([inflow] sets its velocity) or an outflow (zero "
+                                         "normal gradient, carrying the inflow's volume flux).",
+                                         name))));
+        }
     }
-    s.push_back(choice(key("inflow", "profile", T::string, none, "\"uniform\"",
-                           "Normal velocity over every inflow side: uniform, or parabolic (Π 4s(1 "
-                           "− s) over the walled transverse axes, s the fraction across the box: "
-                           "a channel's Poiseuille profile, mean 2/3 of the maximum in 2D)."),
-                       {"uniform", "parabolic"}));
-    s.push_back(positive(key("inflow", "velocity", T::real, "m/s", "none",
-                             "Inflow speed into the box: the uniform speed, or the parabola's "
-                             "maximum (centre line). Required when a side is an inflow.")));
+    s.push_back(bound(key("inflow", "profile", T::string, none, "\"uniform\"",
+                          "Normal velocity over every inflow side: uniform, or parabolic (Π 4s(1 "
+                          "− s) over the walled transverse axes, s the fraction across the box: "
+                          "a channel's Poiseuille profile, mean 2/3 of the maximum in 2D)."),
+                      &CaseConfig::inflow, &InflowConfig::profile));
+    s.push_back(
+        bound(positive(key("inflow", "velocity", T::real, "m/s", "none",
+                           "Inflow speed into the box: the uniform speed, or the parabola's "
+                           "maximum (centre line). Required when a side is an inflow.")),
+              &CaseConfig::inflow, &InflowConfig::velocity));
+
+    s.push_back(bound(
+        positive(key("fluid", "density", T::real, "kg/m³", std::nullopt, "Fluid density ρf.")),
+        &CaseConfig::fluid, &FluidConfig::density));
+    s.push_back(
+        bound(positive(key("fluid", "viscosity", T::real, "Pa·s", "none",
+                           "Dynamic viscosity μ; required unless [nondimensional] gives reynolds, "
+                           "from which it is derived.")),
+              &CaseConfig::fluid, &FluidConfig::viscosity));
+    s.push_back(bound(key("fluid", "gravity", T::real_vector, "m/s²", "zeros",
+                          "Gravitational acceleration; it acts on particles only (buoyancy-reduced "
+                          "weight), the fluid's hydrostatic pressure is not computed."),
+                      &CaseConfig::fluid, &FluidConfig::gravity));
+    s.push_back(bound(key("fluid", "body_force", T::real_vector, "N/m³", "zeros",
+                          "A uniform force per unit volume on the fluid, e.g. to drive a periodic "
+                          "channel."),
+                      &CaseConfig::fluid, &FluidConfig::body_force));
+
+    s.push_back(bound(positive(key("time", "dt", T::real, "s", std::nullopt, "Time step Δt.")),
+                      &CaseConfig::time, &TimeConfig::dt));
+    s.push_back(bound(positive(key("time", "end", T::real, "s", "none",
+                                   "End time; at least one of time.end, time.steady_tolerance and "
+                                   "time.rest_speed is required.")),
+                      &CaseConfig::time, &TimeConfig::end));
+    s.push_back(bound(positive(key("time", "steady_tolerance", T::real, none, "none",
+                                   "Stop when the flow is steady: max|u^{n+1} − u^n|/Δt · L/U² "
+                                   "below this (L the smallest box side, U the largest speed).")),
+                      &CaseConfig::time, &TimeConfig::steady_tolerance));
+    s.push_back(
+        bound(positive(key("time", "rest_speed", T::real, "m/s", "none",
+                           "Stop when the particles have settled: every free body's speed "
+                           "|U| + |ω|R below this for time.rest_duration (bodies at rest from "
+                           "the start count as settled: see time.min_end).")),
+              &CaseConfig::time, &TimeConfig::rest_speed));
+    s.push_back(bound(positive(key("time", "rest_duration", T::real, "s", "0.1",
+                                   "How long every free body must stay below time.rest_speed.")),
+                      &CaseConfig::time, &TimeConfig::rest_duration));
+    s.push_back(bound(ranged(key("time", "min_end", T::real, "s", "0",
+                                 "The earliest time at which time.rest_speed or "
+                                 "time.steady_tolerance may end the run."),
+                             0.0, inf, false, false),
+                      &CaseConfig::time, &TimeConfig::min_end));
+    s.push_back(bound(ranged(key("time", "max_steps", T::integer, none, "100000000",
+                                 "Stop after this many steps."),
+                             1, inf, false, false),
+                      &CaseConfig::time, &TimeConfig::max_steps));
+    s.push_back(
+        bound(positive(key("time", "max_courant", T::real, none, "none",
+                           "Adaptive time step: Δt limited so that the fluid and the bodies "
+                           "move at most this many cells per step (max |u_d| Δt / h_d and "
+                           "(|U| + |ω|R) Δt / h); time.dt is then the first and the largest "
+                           "step, and Δt grows by at most 1.2× per step. None: the fixed "
+                           "time.dt.")),
+              &CaseConfig::time, &TimeConfig::max_courant));
+    s.push_back(bound(key("time", "steady", T::boolean, none, "false",
+                          "Pseudo-time march to a steady state (needs time.steady_tolerance, no "
+                          "free bodies): Δt starts at time.dt and follows the residual, Δt ← Δt · "
+                          "r_old/r_new (switched evolution relaxation, Mulder & van Leer 1985), at "
+                          "most 2× per step and within time.max_courant if given. Intermediate "
+                          "states are not time-accurate."),
+                      &CaseConfig::time, &TimeConfig::is_steady));
+
+    s.push_back(bound(ranged(key("simple", "tolerance", T::real, none, "1e-5",
+                                 "SIMPLE convergence: normalised mass and momentum residuals below "
+                                 "this end a step's outer iterations."),
+                             0.0, 1.0, true, true),
+                      &CaseConfig::simple, &SimpleConfig::tolerance));
+    s.push_back(bound(ranged(key("simple", "max_outer_iterations", T::integer, none, "50",
+                                 "Outer iterations per step at most (a step that reaches it is "
+                                 "reported as not converged)."),
+                             1, 10000, false, false),
+                      &CaseConfig::simple, &SimpleConfig::max_outer_iterations));
+    s.push_back(bound(ranged(key("simple", "velocity_relaxation", T::real, none, "1.0",
+                                 "Under-relaxation α_u of the momentum equations."),
+                             0.0, 1.0, true, false),
+                      &CaseConfig::simple, &SimpleConfig::velocity_relaxation));
+    s.push_back(bound(ranged(key("simple", "pressure_relaxation", T::real, none, "1.0",
+                                 "Under-relaxation α_p of the pressure correction, eq. (10)."),
+                             0.0, 1.0, true, false),
+                      &CaseConfig::simple, &SimpleConfig::pressure_relaxation));
+    s.push_back(bound(key("simple", "pressure_update", T::string, none, "\"rotational\"",
+                          "How eq. (10) updates p from p′: standard (p* + α_p p′, the paper's) "
+                          "or rotational (p* + α_p (p′ − μ∇·u*): the same converged answer in "
+                          "fewer outer iterations where viscosity acts within a cell in Δt; "
+                          "docs/method.md §1)."),
+                      &CaseConfig::simple, &SimpleConfig::pressure_update));
+    s.push_back(bound(ranged(key("simple", "acceleration_depth", T::integer, none, "2",
+                                 "Anderson acceleration of the outer iterations of a step with "
+                                 "bodies: how many earlier iterates it combines (0: off; "
+                                 "docs/method.md §4)."),
+                             0, 10, false, false),
+                      &CaseConfig::simple, &SimpleConfig::acceleration_depth));
+    s.push_back(
+        bound(ranged(key("simple", "momentum_sweeps", T::integer, none, "4",
+                         "Red-black Gauss–Seidel sweeps of the momentum equations per V-cycle "
+                         "(half before the coarse correction, half after), or per outer "
+                         "iteration without cycles."),
+                     1, 100, false, false),
+              &CaseConfig::simple, &SimpleConfig::momentum_sweeps));
+    s.push_back(
+        bound(ranged(key("simple", "momentum_cycles", T::integer, none, "1",
+                         "Multigrid V-cycles (additive correction) of the momentum equations "
+                         "per outer iteration, when the multigrid is used; 0: sweeps alone."),
+                     0, 20, false, false),
+              &CaseConfig::simple, &SimpleConfig::momentum_cycles));
+    s.push_back(bound(key("simple", "momentum_solver", T::string, none, "\"auto\"",
+                          "Momentum solve: multigrid (V-cycles smoothed by Gauss–Seidel), "
+                          "gauss_seidel (sweeps alone) or auto (multigrid where viscosity "
+                          "dominates the time term, ρΔV/Δt < 20 % of a_P; docs/method.md §1)."),
+                      &CaseConfig::simple, &SimpleConfig::momentum_solver));
+    s.push_back(bound(key("simple", "convection", T::string, none, "\"central\"",
+                          "Convection: central (second order, by deferred correction) or "
+                          "upwind (first order)."),
+                      &CaseConfig::simple, &SimpleConfig::convection));
+    s.push_back(bound(key("simple", "pressure_solver", T::string, none, "\"auto\"",
+                          "Pressure-correction solver: fft (direct, FFTW), hypre (PFMG-"
+                          "preconditioned CG) or auto (fft wherever the boundaries allow)."),
+                      &CaseConfig::simple, &SimpleConfig::pressure_solver));
+    s.push_back(bound(key("simple", "fft_planning", T::string, none, "\"estimate\"",
+                          "FFTW planning: estimate (the same plan every run: bit-identical "
+                          "reruns) or measure (≈ 1.7× faster transforms at 256², but the plan "
+                          "and the last bits may differ between runs)."),
+                      &CaseConfig::simple, &SimpleConfig::fft_planning));
+    s.push_back(bound(ranged(key("simple", "linear_tolerance", T::real, none, "1e-10",
+                                 "Relative residual tolerance of the hypre pressure solver."),
+                             0.0, 1.0, true, true),
+                      &CaseConfig::simple, &SimpleConfig::linear_tolerance));
+    s.push_back(bound(ranged(key("simple", "linear_max_iterations", T::integer, none, "200",
+                                 "Iterations of the hypre pressure solver at most."),
+                             1, 100000, false, false),
+                      &CaseConfig::simple, &SimpleConfig::linear_max_iterations));
+
+    s.push_back(body_key(key("bodies", "shape", T::string, none, "\"disk\"",
+                             "Body shape: disk (2D) or sphere (3D)."),
+                         &BodyConfig::shape));
+    s.push_back(
+        body_key(positive(key("bodies", "diameter", T::real, "m", std::nullopt, "Diameter D.")),
+                 &BodyConfig::diameter));
+    s.push_back(
+        body_key(positive(key("bodies", "density", T::real, "kg/m³", "none",
+                              "Body density ρs; required unless nondimensional.density_ratio "
+                              "gives it.")),
+                 &BodyConfig::density));
+    s.push_back(body_key(key("bodies", "position", T::real_vector, "m", std::nullopt,
+                             "Initial centre (inside the box, clear of walls and other bodies)."),
+                         &BodyConfig::position));
+    s.push_back(body_key(key("bodies", "velocity", T::real_vector, "m/s", "zeros",
+                             "Initial velocity; for motion = \"prescribed\" the velocity kept."),
+                         &BodyConfig::velocity));
+    s.push_back(body_key(key("bodies", "omega", T::real, "rad/s", "0.0",
+                             "Initial angular velocity about z (2D); kept for prescribed motion."),
+                         &BodyConfig::omega));
+    s.push_back(body_key(key("bodies", "motion", T::string, none, "\"free\"",
+                             "free (moved by fluid and gravity), prescribed (keeps its velocity), "
+                             "fixed (at rest)."),
+                         &BodyConfig::motion));
+    s.push_back(
+        body_key(ranged(key("bodies", "n_rings", T::integer, none, "0",
+                            "Marker rings N_a (paper Fig. 1: 1 + 3 N_a (N_a + 1) markers); 0: "
+                            "from coupling.marker_spacing_ratio."),
+                        0, 1000, false, false),
+                 &BodyConfig::n_rings));
+    add_material_keys(s, "bodies", "body",
+                      [](CaseConfig& config, std::size_t entry) -> SurfaceKeys& {
+                          return entry_of(config.bodies, entry).surface;
+                      });
+
+    s.push_back(bound(key("coupling", "kernel", T::string, none, "\"hat\"",
+                          "Discrete delta function: hat (the paper's linear d_h), roma3 (Roma, "
+                          "Peskin & Berger 1999), peskin4 (Peskin 2002)."),
+                      &CaseConfig::coupling, &CouplingConfig::kernel));
+    s.push_back(
+        bound(ranged(key("coupling", "marker_spacing_ratio", T::real, none, "1.4",
+                         "Target marker spacing h_L / h when bodies.n_rings is 0 (paper §3.1 "
+                         "recommends about 1.45)."),
+                     0.5, 10.0, false, false),
+              &CaseConfig::coupling, &CouplingConfig::marker_spacing_ratio));
+
+    s.push_back(bound(key("contact", "model", T::string, none, "\"linear\"",
+                          "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "
+                          "eq. (18)), hertz_mindlin (Hertz normal force with a restitution "
+                          "dashpot, Mindlin tangential stiffness; docs/method.md) or none "
+                          "(bodies pass through each other and the walls)."),
+                      &CaseConfig::contact, &ContactConfig::model));
+    s.push_back(bound(key("contact", "coupling", T::string, none, "\"paper\"",
+                          "paper: while in contact, DEM replaces (13)–(14) and (17) (stable in "
+                          "piles); additive: the mean contact force of the sub-steps is added "
+                          "to (13)–(14) (unstable when collisions are much shorter than Δt)."),
+                      &CaseConfig::contact, &ContactConfig::coupling));
+    s.push_back(bound(positive(key("contact", "stiffness", T::real, "N/m", "none",
+                                   "Linear: spring stiffness k (2D: per unit depth); or give "
+                                   "restitution and duration instead.")),
+                      &CaseConfig::contact, &ContactConfig::stiffness));
+    s.push_back(bound(ranged(key("contact", "damping", T::real, "N·s/m", "none",
+                                 "Linear: dashpot coefficient c (with stiffness; default 0)."),
+                             0.0, inf, false, false),
+                      &CaseConfig::contact, &ContactConfig::damping));
+    s.push_back(bound(ranged(key("contact", "restitution", T::real, none, "none",
+                                 "Restitution coefficient e. Linear: of a wall collision of the "
+                                 "lightest body (with duration), fddem derives k and c; "
+                                 "hertz_mindlin: of every body and wall without its own, fddem "
+                                 "derives the dashpot. Default 1."),
+                             0.0, 1.0, true, false),
+                      &CaseConfig::contact, &ContactConfig::surface, &SurfaceKeys::restitution));
+    s.push_back(
+        bound(positive(key("contact", "duration", T::real, "s", "none",
+                           "Linear: duration t_c of a wall collision of the lightest body; fddem "
+                           "derives k and c. Default (neither stiffness nor duration): time.dt.")),
+              &CaseConfig::contact, &ContactConfig::duration));
+    s.push_back(bound(ranged(key("contact", "tangential_stiffness_ratio", T::real, none, "none",
+                                 "Linear: tangential spring k_t = κ k (dashpot c √κ) used when "
+                                 "friction > 0. Default 2/7, which gives a sphere equal normal and "
+                                 "tangential periods."),
+                             0.0, 10.0, true, false),
+                      &CaseConfig::contact, &ContactConfig::tangential_stiffness_ratio));
+    s.push_back(
+        bound(positive(key("contact", "young_modulus", T::real, "Pa", "none",
+                           "Hertz–Mindlin: Young's modulus E of every body and wall without "
+                           "its own (2D: a modulus per unit depth, docs/method.md).")),
+              &CaseConfig::contact, &ContactConfig::surface, &SurfaceKeys::young_modulus));
+    s.push_back(
+        bound(ranged(key("contact", "poisson_ratio", T::real, none, "none",
+                         "Hertz–Mindlin: Poisson ratio ν of every body and wall without its "
+                         "own. Default 0.3."),
+                     0.0, 0.5, false, true),
+              &CaseConfig::contact, &ContactConfig::surface, &SurfaceKeys::poisson_ratio));
+    s.push_back(
+        bound(ranged(key("contact", "friction", T::real, none, "0.0",
+                         "Sliding (Coulomb) friction coefficient μ_s of every body and wall "
+                         "without its own; a pair takes the geometric mean. 0: frictionless, "
+                         "as in the paper."),
+                     0.0, inf, false, false),
+              &CaseConfig::contact, &ContactConfig::surface, &SurfaceKeys::friction));
+    s.push_back(
+        bound(ranged(key("contact", "rolling_friction", T::real, none, "0.0",
+                         "Rolling friction coefficient μ_r of every body and wall without its "
+                         "own: a torque μ_r R* F_n against the relative rolling (constant "
+                         "directional torque model). 0: none."),
+                     0.0, inf, false, false),
+              &CaseConfig::contact, &ContactConfig::surface, &SurfaceKeys::rolling_friction));
+    s.push_back(
+        bound(positive(key("contact", "impact_velocity", T::real, "m/s", "none",
+                           "Hertz–Mindlin: the fastest impact expected, which sets the "
+                           "sub-steps (t_c ∝ v^(−1/5)). Default: √(2|g|L) (L the largest box "
+                           "side) + twice the fastest initial body + the fastest wall.")),
+              &CaseConfig::contact, &ContactConfig::impact_velocity));
+    s.push_back(bound(ranged(key("contact", "velocity_damping", T::real, "kg/s", "0.0",
+                                 "Velocity damping β of eq. (18) (0: none, as in the paper)."),
+                             0.0, inf, false, false),
+                      &CaseConfig::contact, &ContactConfig::velocity_damping));
+    s.push_back(
+        bound(ranged(key("contact", "margin", T::real, "m", "0.0",
+                         "Paper coupling: a body closer than this to another body or a wall "
+                         "during the DEM sub-steps is moved by DEM for the step, as one in "
+                         "contact (0: touching bodies only, as the paper). About h keeps "
+                         "crowded bodies from being pushed into each other by the fluid "
+                         "update within a step (docs/method.md §5)."),
+                     0.0, inf, false, false),
+              &CaseConfig::contact, &ContactConfig::margin));
+    s.push_back(
+        bound(ranged(key("contact", "substeps", T::integer, none, "0",
+                         "DEM sub-steps N_i per time step (Δt_i = Δt/N_i); 0: enough for 80 "
+                         "per pair collision. At least 10 per collision are required."),
+                     0, max_dem_substeps, false, false),
+              &CaseConfig::contact, &ContactConfig::substeps));
 
     s.push_back(
-        positive(key("fluid", "density", T::real, "kg/m³", std::nullopt, "Fluid density ρf.")));
+        bound(positive(key("nondimensional", "reynolds", T::real, none, "none",
+                           "Re = ρf U_c D / μ (D: the first body's diameter); fddem derives "
+                           "fluid.viscosity.")),
+              &CaseConfig::nondimensional, &NondimensionalConfig::reynolds));
     s.push_back(
-        positive(key("fluid", "viscosity", T::real, "Pa·s", "none",
-                     "Dynamic viscosity μ; required unless [nondimensional] gives reynolds, "
-                     "from which it is derived.")));
-    s.push_back(key("fluid", "gravity", T::real_vector, "m/s²", "zeros",
-                    "Gravitational acceleration; it acts on particles only (buoyancy-reduced "
-                    "weight), the fluid's hydrostatic pressure is not computed."));
-    s.push_back(key("fluid", "body_force", T::real_vector, "N/m³", "zeros",
-                    "A uniform force per unit volume on the fluid, e.g. to drive a periodic "
-                    "channel."));
-
-    s.push_back(positive(key("time", "dt", T::real, "s", std::nullopt, "Time step Δt.")));
-    s.push_back(positive(key("time", "end", T::real, "s", "none",
-                             "End time; at least one of time.end, time.steady_tolerance and "
-                             "time.rest_speed is required.")));
-    s.push_back(positive(key("time", "steady_tolerance", T::real, none, "none",
-                             "Stop when the flow is steady: max|u^{n+1} − u^n|/Δt · L/U² "
-                             "below this (L the smallest box side, U the largest speed).")));
-    s.push_back(positive(key("time", "rest_speed", T::real, "m/s", "none",
-                             "Stop when the particles have settled: every free body's speed "
-                             "|U| + |ω|R below this for time.rest_duration (bodies at rest from "
-                             "the start count as settled: see time.min_end).")));
-    s.push_back(positive(key("time", "rest_duration", T::real, "s", "0.1",
-                             "How long every free body must stay below time.rest_speed.")));
-    s.push_back(ranged(key("time", "min_end", T::real, "s", "0",
-                           "The earliest time at which time.rest_speed or "
-                           "time.steady_tolerance may end the run."),
-                       0.0, inf, false, false));
-    s.push_back(ranged(
-        key("time", "max_steps", T::integer, none, "100000000", "Stop after this many steps."), 1,
-        inf, false, false));
-    s.push_back(positive(key("time", "max_courant", T::real, none, "none",
-                             "Adaptive time step: Δt limited so that the fluid and the bodies "
-                             "move at most this many cells per step (max |u_d| Δt / h_d and "
-                             "(|U| + |ω|R) Δt / h); time.dt is then the first and the largest "
-                             "step, and Δt grows by at most 1.2× per step. None: the fixed "
-                             "time.dt.")));
-    s.push_back(key("time", "steady", T::boolean, none, "false",
-                    "Pseudo-time march to a steady state (needs time.steady_tolerance, no "
-                    "free bodies): Δt starts at time.dt and follows the residual, Δt ← Δt · "
-                    "r_old/r_new (switched evolution relaxation, Mulder & van Leer 1985), at "
-                    "most 2× per step and within time.max_courant if given. Intermediate "
-                    "states are not time-accurate."));
-
-    s.push_back(ranged(key("simple", "tolerance", T::real, none, "1e-5",
-                           "SIMPLE convergence: normalised mass and momentum residuals below "
-                           "this end a step's outer iterations."),
-                       0.0, 1.0, true, true));
-    s.push_back(ranged(key("simple", "max_outer_iterations", T::integer, none, "50",
-                           "Outer iterations per step at most (a step that reaches it is "
-                           "reported as not converged)."),
-                       1, 10000, false, false));
-    s.push_back(ranged(key("simple", "velocity_relaxation", T::real, none, "1.0",
-                           "Under-relaxation α_u of the momentum equations."),
-                       0.0, 1.0, true, false));
-    s.push_back(ranged(key("simple", "pressure_relaxation", T::real, none, "1.0",
-                           "Under-relaxation α_p of the pressure correction, eq. (10)."),
-                       0.0, 1.0, true, false));
-    s.push_back(choice(key("simple", "pressure_update", T::string, none, "\"rotational\"",
-                           "How eq. (10) updates p from p′: standard (p* + α_p p′, the paper's) "
-                           "or rotational (p* + α_p (p′ − μ∇·u*): the same converged answer in "
-                           "fewer outer iterations where viscosity acts within a cell in Δt; "
-                           "docs/method.md §1)."),
-                       {"standard", "rotational"}));
-    s.push_back(ranged(key("simple", "acceleration_depth", T::integer, none, "2",
-                           "Anderson acceleration of the outer iterations of a step with "
-                           "bodies: how many earlier iterates it combines (0: off; "
-                           "docs/method.md §4)."),
-                       0, 10, false, false));
-    s.push_back(ranged(key("simple", "momentum_sweeps", T::integer, none, "4",
-                           "Red-black Gauss–Seidel sweeps of the momentum equations per V-cycle "
-                           "(half before the coarse correction, half after), or per outer "
-                           "iteration without cycles."),
-                       1, 100, false, false));
-    s.push_back(ranged(key("simple", "momentum_cycles", T::integer, none, "1",
-                           "Multigrid V-cycles (additive correction) of the momentum equations "
-                           "per outer iteration, when the multigrid is used; 0: sweeps alone."),
-                       0, 20, false, false));
-    s.push_back(choice(key("simple", "momentum_solver", T::string, none, "\"auto\"",
-                           "Momentum solve: multigrid (V-cycles smoothed by Gauss–Seidel), "
-                           "gauss_seidel (sweeps alone) or auto (multigrid where viscosity "
-                           "dominates the time term, ρΔV/Δt < 20 % of a_P; docs/method.md §1)."),
-                       {"auto", "multigrid", "gauss_seidel"}));
-    s.push_back(choice(key("simple", "convection", T::string, none, "\"central\"",
-                           "Convection: central (second order, by deferred correction) or "
-                           "upwind (first order)."),
-                       {"central", "upwind"}));
-    s.push_back(choice(key("simple", "pressure_solver", T::string, none, "\"auto\"",
-                           "Pressure-correction solver: fft (direct, FFTW), hypre (PFMG-"
-                           "preconditioned CG) or auto (fft wherever the boundaries allow)."),
-                       {"auto", "fft", "hypre"}));
-    s.push_back(choice(key("simple", "fft_planning", T::string, none, "\"estimate\"",
-                           "FFTW planning: estimate (the same plan every run: bit-identical "
-                           "reruns) or measure (≈ 1.7× faster transforms at 256², but the plan "
-                           "and the last bits may differ between runs)."),
-                       {"measure", "estimate"}));
-    s.push_back(ranged(key("simple", "linear_tolerance", T::real, none, "1e-10",
-                           "Relative residual tolerance of the hypre pressure solver."),
-                       0.0, 1.0, true, true));
-    s.push_back(ranged(key("simple", "linear_max_iterations", T::integer, none, "200",
-                           "Iterations of the hypre pressure solver at most."),
-                       1, 100000, false, false));
-
-    s.push_back(choice(key("bodies", "shape", T::string, none, "\"disk\"",
-                           "Body shape: disk (2D) or sphere (3D)."),
-                       {"disk", "sphere"}));
-    s.push_back(positive(key("bodies", "diameter", T::real, "m", std::nullopt, "Diameter D.")));
-    s.push_back(positive(key("bodies", "density", T::real, "kg/m³", "none",
-                             "Body density ρs; required unless nondimensional.density_ratio "
-                             "gives it.")));
-    s.push_back(key("bodies", "position", T::real_vector, "m", std::nullopt,
-                    "Initial centre (inside the box, clear of walls and other bodies)."));
-    s.push_back(key("bodies", "velocity", T::real_vector, "m/s", "zeros",
-                    "Initial velocity; for motion = \"prescribed\" the velocity kept."));
-    s.push_back(key("bodies", "omega", T::real, "rad/s", "0.0",
-                    "Initial angular velocity about z (2D); kept for prescribed motion."));
-    s.push_back(choice(key("bodies", "motion", T::string, none, "\"free\"",
-                           "free (moved by fluid and gravity), prescribed (keeps its velocity), "
-                           "fixed (at rest)."),
-                       {"free", "prescribed", "fixed"}));
-    s.push_back(ranged(key("bodies", "n_rings", T::integer, none, "0",
-                           "Marker rings N_a (paper Fig. 1: 1 + 3 N_a (N_a + 1) markers); 0: "
-                           "from coupling.marker_spacing_ratio."),
-                       0, 1000, false, false));
-    add_material_keys(s, "bodies", "body");
-
-    s.push_back(choice(key("coupling", "kernel", T::string, none, "\"hat\"",
-                           "Discrete delta function: hat (the paper's linear d_h), roma3 (Roma, "
-                           "Peskin & Berger 1999), peskin4 (Peskin 2002)."),
-                       {"hat", "roma3", "peskin4"}));
-    s.push_back(ranged(key("coupling", "marker_spacing_ratio", T::real, none, "1.4",
-                           "Target marker spacing h_L / h when bodies.n_rings is 0 (paper §3.1 "
-                           "recommends about 1.45)."),
-                       0.5, 10.0, false, false));
-
-    s.push_back(choice(key("contact", "model", T::string, none, "\"linear\"",
-                           "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "
-                           "eq. (18)), hertz_mindlin (Hertz normal force with a restitution "
-                           "dashpot, Mindlin tangential stiffness; docs/method.md) or none "
-                           "(bodies pass through each other and the walls)."),
-                       contact_model_names()));
-    s.push_back(choice(key("contact", "coupling", T::string, none, "\"paper\"",
-                           "paper: while in contact, DEM replaces (13)–(14) and (17) (stable in "
-                           "piles); additive: the mean contact force of the sub-steps is added "
-                           "to (13)–(14) (unstable when collisions are much shorter than Δt)."),
-                       {"additive", "paper"}));
-    s.push_back(positive(key("contact", "stiffness", T::real, "N/m", "none",
-                             "Linear: spring stiffness k (2D: per unit depth); or give "
-                             "restitution and duration instead.")));
-    s.push_back(ranged(key("contact", "damping", T::real, "N·s/m", "none",
-                           "Linear: dashpot coefficient c (with stiffness; default 0)."),
-                       0.0, inf, false, false));
-    s.push_back(ranged(key("contact", "restitution", T::real, none, "none",
-                           "Restitution coefficient e. Linear: of a wall collision of the "
-                           "lightest body (with duration), fddem derives k and c; "
-                           "hertz_mindlin: of every body and wall without its own, fddem "
-                           "derives the dashpot. Default 1."),
-                       0.0, 1.0, true, false));
-    s.push_back(
-        positive(key("contact", "duration", T::real, "s", "none",
-                     "Linear: duration t_c of a wall collision of the lightest body; fddem "
-                     "derives k and c. Default (neither stiffness nor duration): time.dt.")));
-    s.push_back(ranged(key("contact", "tangential_stiffness_ratio", T::real, none, "none",
-                           "Linear: tangential spring k_t = κ k (dashpot c √κ) used when "
-                           "friction > 0. Default 2/7, which gives a sphere equal normal and "
-                           "tangential periods."),
-                       0.0, 10.0, true, false));
-    s.push_back(positive(key("contact", "young_modulus", T::real, "Pa", "none",
-                             "Hertz–Mindlin: Young's modulus E of every body and wall without "
-                             "its own (2D: a modulus per unit depth, docs/method.md).")));
-    s.push_back(ranged(key("contact", "poisson_ratio", T::real, none, "none",
-                           "Hertz–Mindlin: Poisson ratio ν of every body and wall without its "
-                           "own. Default 0.3."),
-                       0.0, 0.5, false, true));
-    s.push_back(ranged(key("contact", "friction", T::real, none, "0.0",
-                           "Sliding (Coulomb) friction coefficient μ_s of every body and wall "
-                           "without its own; a pair takes the geometric mean. 0: frictionless, "
-                           "as in the paper."),
-                       0.0, inf, false, false));
-    s.push_back(ranged(key("contact", "rolling_friction", T::real, none, "0.0",
-                           "Rolling friction coefficient μ_r of every body and wall without its "
-                           "own: a torque μ_r R* F_n against the relative rolling (constant "
-                           "directional torque model). 0: none."),
-                       0.0, inf, false, false));
-    s.push_back(positive(key("contact", "impact_velocity", T::real, "m/s", "none",
-                             "Hertz–Mindlin: the fastest impact expected, which sets the "
-                             "sub-steps (t_c ∝ v^(−1/5)). Default: √(2|g|L) (L the largest box "
-                             "side) + twice the fastest initial body + the fastest wall.")));
-    s.push_back(ranged(key("contact", "velocity_damping", T::real, "kg/s", "0.0",
-                           "Velocity damping β of eq. (18) (0: none, as in the paper)."),
-                       0.0, inf, false, false));
-    s.push_back(ranged(key("contact", "margin", T::real, "m", "0.0",
-                           "Paper coupling: a body closer than this to another body or a wall "
-                           "during the DEM sub-steps is moved by DEM for the step, as one in "
-                           "contact (0: touching bodies only, as the paper). About h keeps "
-                           "crowded bodies from being pushed into each other by the fluid "
-                           "update within a step (docs/method.md §5)."),
-                       0.0, inf, false, false));
-    s.push_back(ranged(key("contact", "substeps", T::integer, none, "0",
-                           "DEM sub-steps N_i per time step (Δt_i = Δt/N_i); 0: enough for 80 "
-                           "per pair collision. At least 10 per collision are required."),
-                       0, 10000000, false, false));
-
-    s.push_back(positive(key("nondimensional", "reynolds", T::real, none, "none",
-                             "Re = ρf U_c D / μ (D: the first body's diameter); fddem derives "
-                             "fluid.viscosity.")));
-    s.push_back(ranged(key("nondimensional", "density_ratio", T::real, none, "none",
-                           "ρr = ρs / ρf; with reynolds, fddem derives every body's density and "
-                           "the gravity of eqs. (21)–(22) (Happel & Brenner wall factor K)."),
-                       0.0, inf, true, false));
-    s.push_back(positive(key("nondimensional", "velocity", T::real, "m/s", "1.0",
-                             "Characteristic velocity U_c of eq. (21).")));
+        bound(ranged(key("nondimensional", "density_ratio", T::real, none, "none",
+                         "ρr = ρs / ρf; with reynolds, fddem derives every body's density and "
+                         "the gravity of eqs. (21)–(22) (Happel & Brenner wall factor K)."),
+                     0.0, inf, true, false),
+              &CaseConfig::nondimensional, &NondimensionalConfig::density_ratio));
+    s.push_back(bound(positive(key("nondimensional", "velocity", T::real, "m/s", "1.0",
+                                   "Characteristic velocity U_c of eq. (21).")),
+                      &CaseConfig::nondimensional, &NondimensionalConfig::velocity));
 
     s.push_back(key("derived", "viscosity", T::real, "Pa·s", "none",
                     "Written by fddem into case.toml when derived from [nondimensional]; "
@@ -359,42 +474,57 @@ std::vector<KeySpec> case_schema()
     s.push_back(key("derived", "contact_substeps", T::integer, none, "none",
                     "DEM sub-steps N_i used, written by fddem; ignored on input."));
 
-    s.push_back(key("output", "directory", T::string, none, "\"\"",
-                    "Run directory; empty: runs/<case file name>. `fddem run -o` overrides it."));
-    s.push_back(ranged(key("output", "field_interval", T::real, "s", "0",
-                           "Simulated time between field files (VTK); 0: the initial and "
-                           "final fields only."),
-                       0.0, inf, false, false));
-    s.push_back(ranged(key("output", "particle_interval", T::real, "s", "0",
-                           "Simulated time between rows of particles.csv; 0: every step."),
-                       0.0, inf, false, false));
-    s.push_back(ranged(key("output", "log_interval", T::integer, none, "100",
-                           "Steps between log lines when not on a terminal."),
-                       1, inf, false, false));
+    s.push_back(
+        bound(key("output", "directory", T::string, none, "\"\"",
+                  "Run directory; empty: runs/<case file name>. `fddem run -o` overrides it."),
+              &CaseConfig::output, &OutputConfig::directory));
+    s.push_back(bound(ranged(key("output", "field_interval", T::real, "s", "0",
+                                 "Simulated time between field files (VTK); 0: the initial and "
+                                 "final fields only."),
+                             0.0, inf, false, false),
+                      &CaseConfig::output, &OutputConfig::field_interval));
+    s.push_back(bound(ranged(key("output", "particle_interval", T::real, "s", "0",
+                                 "Simulated time between rows of particles.csv; 0: every step."),
+                             0.0, inf, false, false),
+                      &CaseConfig::output, &OutputConfig::particle_interval));
+    s.push_back(bound(ranged(key("output", "log_interval", T::integer, none, "100",
+                                 "Steps between log lines when not on a terminal."),
+                             1, inf, false, false),
+                      &CaseConfig::output, &OutputConfig::log_interval));
 
-    s.push_back(key("output.lines", "name", T::string, none, std::nullopt,
-                    "Name of a line sample, written to samples/<name>.csv (letters, digits, _ "
-                    "and -)."));
-    s.push_back(key("output.lines", "from", T::real_vector, "m", std::nullopt,
-                    "Start point of the line (inside the box)."));
-    s.push_back(key("output.lines", "to", T::real_vector, "m", std::nullopt,
-                    "End point of the line (inside the box)."));
-    s.push_back(ranged(key("output.lines", "points", T::integer, none, "101",
-                           "Number of equally spaced sample points, ends included."),
-                       2, 1000000, false, false));
+    s.push_back(
+        line_key(key("output.lines", "name", T::string, none, std::nullopt,
+                     "Name of a line sample, written to samples/<name>.csv (letters, digits, _ "
+                     "and -)."),
+                 &LineSample::name));
+    s.push_back(line_key(key("output.lines", "from", T::real_vector, "m", std::nullopt,
+                             "Start point of the line (inside the box)."),
+                         &LineSample::from));
+    s.push_back(line_key(key("output.lines", "to", T::real_vector, "m", std::nullopt,
+                             "End point of the line (inside the box)."),
+                         &LineSample::to));
+    s.push_back(line_key(ranged(key("output.lines", "points", T::integer, none, "101",
+                                    "Number of equally spaced sample points, ends included."),
+                                2, 1000000, false, false),
+                         &LineSample::n_points));
 
-    s.push_back(ranged(key("checkpoint", "step_interval", T::integer, none, "1000",
-                           "Steps between checkpoints (RUN_DIR/checkpoints/, for `fddem run "
-                           "--restart`); 0: none by step count. A checkpoint is also written at "
-                           "the end and on SIGINT/SIGTERM."),
-                       0, inf, false, false));
-    s.push_back(ranged(key("checkpoint", "time_interval", T::real, "s", "0",
-                           "Simulated time between checkpoints; 0: none by time."),
-                       0.0, inf, false, false));
-    s.push_back(ranged(key("checkpoint", "keep", T::integer, none, "2",
-                           "Checkpoints kept: after writing one, all but the newest this many "
-                           "are removed."),
-                       1, 1000000, false, false));
+    s.push_back(
+        bound(ranged(key("checkpoint", "step_interval", T::integer, none, "1000",
+                         "Steps between checkpoints (RUN_DIR/checkpoints/, for `fddem run "
+                         "--restart`); 0: none by step count. A checkpoint is also written at "
+                         "the end and on SIGINT/SIGTERM."),
+                     0, inf, false, false),
+              &CaseConfig::checkpoint, &CheckpointConfig::step_interval));
+    s.push_back(bound(ranged(key("checkpoint", "time_interval", T::real, "s", "0",
+                                 "Simulated time between checkpoints; 0: none by time."),
+                             0.0, inf, false, false),
+                      &CaseConfig::checkpoint, &CheckpointConfig::time_interval));
+    s.push_back(
+        bound(ranged(key("checkpoint", "keep", T::integer, none, "2",
+                         "Checkpoints kept: after writing one, all but the newest this many "
+                         "are removed."),
+                     1, 1000000, false, false),
+              &CaseConfig::checkpoint, &CheckpointConfig::keep));
     return s;
 }
 

@@ -1,15 +1,23 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-/// Every case key, declared once: section, name, type, unit, default, range, doc
-/// (DESIGN.md §7; deal.II's ParameterHandler idea). The reader checks a case against this
-/// table; `fddem info --keys` and docs/case-file.md print it.
+/// Every case key, declared once: section, name, type, unit, default, range, doc, and the field
+/// of CaseConfig it sets (DESIGN.md §7; deal.II's ParameterHandler idea). The reader checks a
+/// case against this table and converts it through it; `fddem info --keys` and
+/// docs/case-file.md print it.
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace fddem {
+
+struct CaseConfig;
 
 enum class KeyType {
     real,           ///< a number (an integer is accepted)
@@ -20,6 +28,16 @@ enum class KeyType {
     integer_vector, ///< one whole number per axis
     boolean_vector, ///< one true/false per axis
 };
+
+/// A key's value as read, by its KeyType: real → double, integer → int64, string, boolean,
+/// real_vector → vector<double>, integer_vector → vector<int64>, boolean_vector → vector<bool>
+/// (one entry per axis).
+using KeyValue = std::variant<double, std::int64_t, std::string, bool, std::vector<double>,
+                              std::vector<std::int64_t>, std::vector<bool>>;
+
+/// Stores a key's checked value in its field of the case; `entry` counts the entries of a table
+/// array ([[bodies]]) from 0 and is 0 elsewhere.
+using KeySetter = std::function<void(CaseConfig& config, std::size_t entry, const KeyValue&)>;
 
 struct KeySpec {
     std::string section; ///< "domain", or "output.lines" for entries of a table array
@@ -33,9 +51,15 @@ struct KeySpec {
     bool is_max_open = false;
     std::vector<std::string> choices; ///< allowed strings (empty: any)
     std::string doc;
+    KeySetter set; ///< none: the key is read but sets nothing ([derived], written by fddem)
 
     [[nodiscard]] std::string full_name() const { return section + "." + name; }
 };
+
+/// The sides of the box as the keys of [walls] and [boundaries] name them, [axis][side] (side 0:
+/// low, 1: high).
+inline constexpr std::array<std::array<const char*, 2>, 3> side_names{
+    {{"x_low", "x_high"}, {"y_low", "y_high"}, {"z_low", "z_high"}}};
 
 /// Sections that are arrays of tables ([[output.lines]]), with a one-line doc each.
 struct TableArraySpec {
@@ -43,7 +67,7 @@ struct TableArraySpec {
     std::string doc;
 };
 
-/// The schema. Later issues add sections ([[bodies]], [contact], [nondimensional]) here.
+/// The schema, in the order of docs/case-file.md.
 [[nodiscard]] std::vector<KeySpec> case_schema();
 [[nodiscard]] std::vector<TableArraySpec> case_table_arrays();
 /// Human-readable type name ("number", "[number; dim]", …).

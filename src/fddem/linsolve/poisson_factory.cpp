@@ -1,5 +1,4 @@
 // SPDX-License-Identifier: MIT
-#include "fddem/core/errors.hpp"
 #include "fddem/linsolve/fft_poisson.hpp"
 #include "fddem/linsolve/hypre_poisson.hpp"
 #include "fddem/linsolve/poisson_solver.hpp"
@@ -13,16 +12,12 @@ std::unique_ptr<PoissonSolver<Dim>> make_poisson_solver(const MacGrid<Dim>& grid
 {
     // Every boundary fddem has today (walls, periodic pairs) keeps the pressure-correction
     // operator constant-coefficient on a uniform box, so "auto" is always the direct solver.
-    if (settings.kind == "auto" || settings.kind == "fft") {
-        return std::make_unique<FftPoissonSolver<Dim>>(grid, is_periodic, settings.is_fft_measured);
-    }
-    if (settings.kind == "hypre") {
+    if (settings.kind == PoissonSolverKind::hypre) {
         return make_hypre_poisson_solver<Dim>(grid, is_periodic, settings.tolerance,
                                               settings.max_iterations);
     }
-    throw InputError("", 0, "simple.pressure_solver",
-                     "unknown pressure solver '" + settings.kind +
-                         "'; expected one of: auto, fft, hypre");
+    return std::make_unique<FftPoissonSolver<Dim>>(grid, is_periodic,
+                                                   settings.fft_planning == FftPlanning::measure);
 }
 
 template std::unique_ptr<PoissonSolver<2>>

@@ -40,18 +40,24 @@ public:
     virtual void restore_plans(const std::string& record) { static_cast<void>(record); }
 };
 
+/// The pressure-correction solver: the direct FFT solver, hypre's PFMG-preconditioned CG, or
+/// automatic (the FFT solver wherever the boundaries allow it: every boundary here does).
+enum class PoissonSolverKind { automatic, fft, hypre };
+
+/// FFT plans by measurement (FFTW_MEASURE: ≈ 1.7× faster transforms at 256², but the plan
+/// FFTW picks may differ between processes, and with it the last bits of the answer) or by
+/// estimate (FFTW_ESTIMATE: the same plan, so bit-identical reruns).
+enum class FftPlanning { estimate, measure };
+
 struct PoissonSettings {
-    std::string kind = "auto"; ///< "auto" (FFT: every boundary here allows it), "fft", "hypre"
-    double tolerance = 1e-10;  ///< relative residual, iterative solvers
+    PoissonSolverKind kind = PoissonSolverKind::automatic;
+    double tolerance = 1e-10; ///< relative residual, iterative solvers
     int max_iterations = 200;
-    /// FFT plans by measurement (FFTW_MEASURE: ≈ 1.7× faster transforms at 256², but the plan
-    /// FFTW picks may differ between processes, and with it the last bits of the answer) or by
-    /// estimate (FFTW_ESTIMATE: the same plan, so bit-identical reruns).
-    bool is_fft_measured = false;
+    FftPlanning fft_planning = FftPlanning::estimate;
 };
 
-/// Builds the solver named in `settings` for a grid whose axes are periodic where
-/// `is_periodic` says and walled elsewhere (throws InputError for an unknown kind).
+/// Builds the solver chosen in `settings` for a grid whose axes are periodic where
+/// `is_periodic` says and walled elsewhere.
 template <int Dim>
 [[nodiscard]] std::unique_ptr<PoissonSolver<Dim>>
 make_poisson_solver(const MacGrid<Dim>& grid, const std::array<bool, Dim>& is_periodic,

@@ -1,10 +1,20 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-/// A case as read and checked by io/case_reader: plain data, dimension-agnostic (the number
-/// of entries of `domain.size` is the dimension). Every field mirrors one case key declared in
-/// io/case_schema.cpp, which holds its unit, default, range and doc.
+/// A case as read and checked by io/case_reader: plain, typed data, dimension-agnostic (the
+/// number of entries of `domain.size` is the dimension). One struct per section of the case
+/// file, one field per key: io/case_schema.cpp binds each key to its field and holds its unit,
+/// default, range and doc. Closed sets of words are enums; io/case_names.hpp holds their names.
+/// Values the reader derives (docs/case-file.md, [derived]) sit beside the keys they come from.
 
-#include "fddem/contact/material.hpp"
+#include "fddem/bodies/material.hpp"
+#include "fddem/bodies/particle.hpp"
+#include "fddem/contact/contact_models.hpp"
+#include "fddem/coupling/delta_kernel.hpp"
+#include "fddem/fluid/boundary_conditions.hpp"
+#include "fddem/fluid/fluid_state.hpp"
+#include "fddem/fluid/momentum.hpp"
+#include "fddem/fluid/pressure_correction.hpp"
+#include "fddem/linsolve/poisson_solver.hpp"
 
 #include <array>
 #include <optional>
@@ -13,56 +23,54 @@
 
 namespace fddem {
 
-struct LineSample {
-    std::string name;
-    std::vector<double> from; ///< [m]
-    std::vector<double> to;   ///< [m]
-    int n_points = 101;
-};
+/// The shape of a body: a disk (2D) or a sphere (3D).
+enum class BodyShape { disk, sphere };
 
-/// One [[bodies]] entry.
-struct BodyConfig {
-    std::string shape = "disk";   ///< "disk" (2D) or "sphere" (3D)
-    double diameter = 1.0;        ///< [m]
-    double density = 1.0;         ///< ρs [kg/m³]
-    std::vector<double> position; ///< centre [m]
-    std::vector<double> velocity; ///< initial (or prescribed) U [m/s]
-    double omega = 0.0;           ///< initial (or prescribed) ω [rad/s] (2D)
-    std::string motion = "free";  ///< "free", "prescribed" or "fixed"
-    int n_rings = 0;              ///< N_a; 0: from coupling.marker_spacing_ratio
-    Material material;            ///< its surface: its own keys, else [contact]'s
-};
-
-struct CaseConfig {
-    std::string source_file; ///< the case file path, for messages
-    std::string as_run;      ///< the whole case as TOML, defaults and overrides filled in
-    std::string title;       ///< [case] title
-
-    // [domain]
-    int dimension = 2;
+/// [domain]
+struct DomainConfig {
+    int dimension = 2;          ///< the number of entries of `size`
     std::vector<double> origin; ///< [m]
     std::vector<double> size;   ///< [m]
     std::vector<int> cells;
     std::vector<bool> periodic;
+};
 
-    // [walls]: velocity of each wall [m/s], indexed [axis][side]; zero when not given.
-    std::vector<std::array<std::vector<double>, 2>> wall_velocity;
+/// The surface keys of a [[bodies]] entry, of [walls] or of [contact] (whose values every body
+/// and wall without its own take), as given: each is unset when the case does not give it.
+struct SurfaceKeys {
+    std::optional<double> young_modulus;    ///< E [Pa]
+    std::optional<double> poisson_ratio;    ///< ν
+    std::optional<double> friction;         ///< μ_s
+    std::optional<double> rolling_friction; ///< μ_r
+    std::optional<double> restitution;      ///< e
+};
 
-    // [boundaries]: "wall", "inflow" or "outflow", indexed [axis][side]; "wall" when not given.
-    std::vector<std::array<std::string, 2>> boundary_kind;
-    // [inflow]
-    std::string inflow_profile = "uniform"; ///< "uniform" or "parabolic"
-    double inflow_velocity = 0.0;           ///< [m/s]: the speed, or the parabola's maximum
+/// [walls]
+struct WallsConfig {
+    /// Velocity of each wall [m/s], indexed [axis][side]; zero when not given.
+    std::vector<std::array<std::vector<double>, 2>> velocity;
+    SurfaceKeys surface;
+    Material material; ///< the walls' surface: `surface`, else [contact]'s (derived)
+};
 
-    // [fluid]
+/// [inflow]
+struct InflowConfig {
+    InflowShape profile = InflowShape::uniform;
+    double velocity = 0.0; ///< [m/s]: the speed, or the parabola's maximum
+};
+
+/// [fluid]
+struct FluidConfig {
     double density = 1.0;           ///< ρf [kg/m³]
-    double viscosity = 1.0;         ///< μ [Pa·s]
+    double viscosity = 1.0;         ///< μ [Pa·s] (given, or derived from [nondimensional])
     std::vector<double> gravity;    ///< g [m/s²]; acts on particles only (DESIGN.md §1)
     std::vector<double> body_force; ///< uniform force on the fluid [N/m³] (e.g. a channel's drive)
+};
 
-    // [time]
+/// [time]
+struct TimeConfig {
     double dt = 1e-3;                       ///< Δt [s]
-    std::optional<double> end_time;         ///< [s]
+    std::optional<double> end;              ///< [s]
     std::optional<double> steady_tolerance; ///< stop when max|u^{n+1}−u^n|/(Δt) · L/U² drops below
     std::optional<double> rest_speed;       ///< stop when every free body is slower than this [m/s]
     double rest_duration = 0.1;             ///< ... for this long [s]
@@ -70,61 +78,124 @@ struct CaseConfig {
     long max_steps = 100000000;
     std::optional<double> max_courant; ///< adaptive Δt: at most this many cells per step
     bool is_steady = false;            ///< pseudo-time march to a steady state (SER)
+};
 
-    // [simple]
+/// [simple]
+struct SimpleConfig {
     double tolerance = 1e-5; ///< normalised mass and momentum residuals
     int max_outer_iterations = 50;
     double velocity_relaxation = 1.0;
     double pressure_relaxation = 1.0;
-    std::string pressure_update = "rotational"; ///< "standard" or "rotational" (eq. (10))
+    PressureUpdate pressure_update = PressureUpdate::rotational; ///< eq. (10)
     int acceleration_depth = 2; ///< Anderson mixing depth of a step's outer iterations (0: off)
     int momentum_sweeps = 4;    ///< Gauss–Seidel sweeps per V-cycle (or in all, without cycles)
     int momentum_cycles = 1;    ///< multigrid V-cycles per outer iteration (0: sweeps alone)
-    std::string momentum_solver = "auto";  ///< "auto", "multigrid" or "gauss_seidel"
-    std::string convection = "central";    ///< "central" (deferred correction) or "upwind"
-    std::string pressure_solver = "auto";  ///< "auto", "fft" or "hypre"
-    std::string fft_planning = "estimate"; ///< "estimate" or "measure"
-    double linear_tolerance = 1e-10;       ///< hypre relative residual tolerance
+    MomentumSolver momentum_solver = MomentumSolver::automatic;
+    ConvectionScheme convection = ConvectionScheme::central;
+    PoissonSolverKind pressure_solver = PoissonSolverKind::automatic;
+    FftPlanning fft_planning = FftPlanning::estimate;
+    double linear_tolerance = 1e-10; ///< hypre relative residual tolerance
     int linear_max_iterations = 200;
+};
 
-    // [[bodies]], [coupling]
-    std::vector<BodyConfig> bodies;
-    std::string kernel = "hat";        ///< delta kernel: "hat", "roma3", "peskin4"
-    double marker_spacing_ratio = 1.4; ///< h_L / h when n_rings is not given
+/// One [[bodies]] entry.
+struct BodyConfig {
+    BodyShape shape = BodyShape::disk;
+    double diameter = 1.0;        ///< [m]
+    double density = 1.0;         ///< ρs [kg/m³] (given, or derived from [nondimensional])
+    std::vector<double> position; ///< centre [m]
+    std::vector<double> velocity; ///< initial (or prescribed) U [m/s]
+    double omega = 0.0;           ///< initial (or prescribed) ω [rad/s] (2D)
+    Motion motion = Motion::free;
+    int n_rings = 0; ///< N_a; 0: from coupling.marker_spacing_ratio
+    SurfaceKeys surface;
+    Material material; ///< its surface: `surface`, else [contact]'s (derived)
+};
 
-    // [contact]: the DEM collision model (eq. (18)); stiffness, damping and substeps are
-    // resolved by the reader (from restitution and duration when those are given).
-    std::string contact_model = "linear";   ///< a name in contact/contact_models.cpp
-    std::string contact_coupling = "paper"; ///< "paper" or "additive"
-    double contact_stiffness = 0.0;         ///< k [N/m] (2D: per unit depth)
-    double contact_damping = 0.0;           ///< c [N·s/m]
-    double contact_beta = 0.0;              ///< velocity damping β [kg/s]
-    double contact_margin = 0.0;            ///< DemSettings::margin [m]
-    int contact_substeps = 1;               ///< N_i
-    double contact_duration = 0.0;          ///< wall collision of the lightest body [s] (derived)
-    double contact_restitution = 1.0;       ///< its restitution (derived)
-    double contact_tangential_ratio = 2.0 / 7.0; ///< κ = k_t / k of the linear model
-    double contact_impact_velocity = 0.0; ///< impact speed that sets the sub-steps [m/s] (Hertz)
-    double contact_reference_mass = 0.0;  ///< mass of the lightest free body [kg] (derived)
-    Material wall_material;               ///< the walls' surface: [walls] keys, else [contact]'s
+/// [coupling]
+struct CouplingConfig {
+    KernelKind kernel = KernelKind::hat; ///< the discrete delta function
+    double marker_spacing_ratio = 1.4;   ///< h_L / h when n_rings is not given
+};
 
-    // [nondimensional]: given, fddem derives viscosity, gravity and body densities.
-    std::optional<double> reynolds;       ///< Re = ρf U_c D / μ
-    std::optional<double> density_ratio;  ///< ρr = ρs / ρf
-    double characteristic_velocity = 1.0; ///< U_c [m/s] (eq. 21 sets g so that U_c results)
-    double wall_factor = 0.0;             ///< K of eq. (20) used (derived; 0 if not derived)
+/// What the reader derives for the DEM collision model (eq. (18)) from [contact] and the bodies.
+struct ContactDerived {
+    double stiffness = 0.0;       ///< k [N/m] (2D: per unit depth) of the linear model
+    double damping = 0.0;         ///< c [N·s/m] of the linear model
+    double duration = 0.0;        ///< of a wall collision of the lightest free body [s]
+    double restitution = 1.0;     ///< of that collision
+    double impact_velocity = 0.0; ///< hertz_mindlin: the impact speed that set the sub-steps [m/s]
+    double reference_mass = 0.0;  ///< the lightest free body's mass [kg]
+    int substeps = 1;             ///< N_i
+};
 
-    // [output]
-    std::string output_directory;   ///< empty: runs/<case file stem>
+/// [contact]: the DEM collision model (eq. (18)).
+struct ContactConfig {
+    ContactModelKind model = ContactModelKind::linear;
+    ContactCoupling coupling = ContactCoupling::paper;
+    std::optional<double> stiffness;               ///< linear: k [N/m]
+    std::optional<double> damping;                 ///< linear: c [N·s/m]
+    std::optional<double> duration;                ///< linear: t_c of a wall collision [s]
+    double tangential_stiffness_ratio = 2.0 / 7.0; ///< linear: κ = k_t / k
+    std::optional<double> impact_velocity;         ///< hertz_mindlin: the fastest impact [m/s]
+    SurfaceKeys surface;           ///< of every body and wall without its own (e: also linear's)
+    double velocity_damping = 0.0; ///< β [kg/s]
+    double margin = 0.0;           ///< DemSettings::margin [m]
+    int substeps = 0;              ///< N_i as given; 0: automatic
+    ContactDerived derived;
+};
+
+/// [nondimensional]: given, fddem derives viscosity, gravity and body densities.
+struct NondimensionalConfig {
+    std::optional<double> reynolds;      ///< Re = ρf U_c D / μ
+    std::optional<double> density_ratio; ///< ρr = ρs / ρf
+    double velocity = 1.0;               ///< U_c [m/s] (eq. 21 sets g so that U_c results)
+    double wall_factor = 0.0;            ///< K of eq. (20) used (derived; 0 if not derived)
+};
+
+/// One [[output.lines]] entry.
+struct LineSample {
+    std::string name;
+    std::vector<double> from; ///< [m]
+    std::vector<double> to;   ///< [m]
+    int n_points = 101;
+};
+
+/// [output]
+struct OutputConfig {
+    std::string directory;          ///< empty: runs/<case file stem>
     double field_interval = 0.0;    ///< [s]; 0: fields at the end only
     double particle_interval = 0.0; ///< [s]; 0: particles.csv every step
     long log_interval = 100;        ///< steps between plain log lines (no terminal)
     std::vector<LineSample> lines;
+};
 
-    // [checkpoint]
-    long checkpoint_step_interval = 1000;  ///< steps between checkpoints; 0: not by steps
-    double checkpoint_time_interval = 0.0; ///< [s]; 0: not by simulated time
-    int checkpoint_keep = 2;               ///< newest checkpoints kept
+/// [checkpoint]
+struct CheckpointConfig {
+    long step_interval = 1000;  ///< steps between checkpoints; 0: not by steps
+    double time_interval = 0.0; ///< [s]; 0: not by simulated time
+    int keep = 2;               ///< newest checkpoints kept
+};
+
+struct CaseConfig {
+    std::string source_file; ///< the case file path, for messages
+    std::string as_run;      ///< the whole case as TOML, defaults and overrides filled in
+    std::string title;       ///< [case] title
+
+    DomainConfig domain;
+    WallsConfig walls;
+    /// [boundaries]: what each side is, indexed [axis][side]; a wall when not given.
+    std::vector<std::array<BoundaryKind, 2>> boundaries;
+    InflowConfig inflow;
+    FluidConfig fluid;
+    TimeConfig time;
+    SimpleConfig simple;
+    std::vector<BodyConfig> bodies;
+    CouplingConfig coupling;
+    ContactConfig contact;
+    NondimensionalConfig nondimensional;
+    OutputConfig output;
+    CheckpointConfig checkpoint;
 };
 
 } // namespace fddem

@@ -53,29 +53,26 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
                                       const FluidProperties& properties, const AnyKernel& kernel,
                                       const CaseConfig& config, const Vec<Dim>& gravity,
                                       bool is_paper_contact)
-    : grid_(grid), bc_(bc), properties_(properties), kernel_(kernel), tolerance_(config.tolerance),
-      max_iterations_(config.max_outer_iterations),
-      pressure_relaxation_(config.pressure_relaxation),
-      pressure_update_(config.pressure_update == "standard" ? PressureUpdate::standard
-                                                            : PressureUpdate::rotational),
-      momentum_solver_(config.momentum_solver),
-      momentum_cycles_(config.momentum_cycles), momentum_{config.convection == "upwind"
-                                                              ? ConvectionScheme::upwind
-                                                              : ConvectionScheme::central,
-                                                          config.velocity_relaxation,
-                                                          config.momentum_sweeps,
-                                                          config.momentum_cycles},
+    : grid_(grid), bc_(bc), properties_(properties), kernel_(kernel),
+      tolerance_(config.simple.tolerance), max_iterations_(config.simple.max_outer_iterations),
+      pressure_relaxation_(config.simple.pressure_relaxation),
+      pressure_update_(config.simple.pressure_update),
+      momentum_solver_(config.simple.momentum_solver),
+      momentum_cycles_(config.simple.momentum_cycles), momentum_{config.simple.convection,
+                                                                 config.simple.velocity_relaxation,
+                                                                 config.simple.momentum_sweeps,
+                                                                 config.simple.momentum_cycles},
       gravity_(gravity), is_paper_contact_(is_paper_contact),
       poisson_(make_poisson_solver<Dim>(
           grid, bc.is_periodic,
-          PoissonSettings{config.pressure_solver, config.linear_tolerance,
-                          config.linear_max_iterations, config.fft_planning == "measure"})),
-      mixing_(config.acceleration_depth)
+          PoissonSettings{config.simple.pressure_solver, config.simple.linear_tolerance,
+                          config.simple.linear_max_iterations, config.simple.fft_planning})),
+      mixing_(config.simple.acceleration_depth)
 {
     for (int a = 0; a < Dim; ++a) {
         systems_.emplace_back(grid_);
     }
-    set_time_step(config.dt);
+    set_time_step(config.time.dt);
 }
 
 template <int Dim>

@@ -113,8 +113,8 @@ private:
     int max_iterations_;
     double pressure_relaxation_;
     PressureUpdate pressure_update_;
-    std::string momentum_solver_; ///< simple.momentum_solver: how set_time_step picks cycles
-    int momentum_cycles_;         ///< simple.momentum_cycles
+    MomentumSolver momentum_solver_; ///< simple.momentum_solver: how set_time_step picks cycles
+    int momentum_cycles_;            ///< simple.momentum_cycles
     MomentumSettings momentum_;
     Vec<Dim> gravity_;
     bool is_paper_contact_;

@@ -19,20 +19,21 @@ namespace fddem {
 template <int Dim>
 Simulation<Dim>::Simulation(const CaseConfig& config)
     : config_(config), grid_(make_grid<Dim>(config)),
-      bc_(make_boundary_conditions<Dim>(config)), properties_{config.density, config.viscosity},
+      bc_(make_boundary_conditions<Dim>(config)), properties_{config.fluid.density,
+                                                              config.fluid.viscosity},
       state_(grid_), previous_level_(grid_),
-      length_scale_(*std::min_element(config.size.begin(), config.size.end())),
-      bodies_(make_particles<Dim>(config, grid_)), kernel_(kernel_from_name(config.kernel)),
-      gravity_(vector_of<Dim>(config.gravity)),
+      length_scale_(*std::min_element(config.domain.size.begin(), config.domain.size.end())),
+      bodies_(make_particles<Dim>(config, grid_)), kernel_(make_kernel(config.coupling.kernel)),
+      gravity_(vector_of<Dim>(config.fluid.gravity)),
       contacts_(make_contact_setup<Dim>(config, grid_, bc_, bodies_)),
       outer_(grid_, bc_, properties_, kernel_, config, gravity_,
              contacts_ && contacts_->is_paper_coupling),
-      step_control_{config.dt, config.max_courant, config.is_steady, config.end_time,
-                    config.is_steady ? 2.0 : 1.2}
+      step_control_{config.time.dt, config.time.max_courant, config.time.is_steady, config.time.end,
+                    config.time.is_steady ? 2.0 : 1.2}
 {
-    clock_.dt = config.dt;
+    clock_.dt = config.time.dt;
     place_markers<Dim>(bodies_.all(), grid_, kernel_, 0, 0.0);
-    set_uniform_body_force(vector_of<Dim>(config.body_force));
+    set_uniform_body_force(vector_of<Dim>(config.fluid.body_force));
     fill_velocity_ghosts(grid_, bc_, state_.u);
     fill_cell_ghosts(grid_, bc_, state_.p);
 }
@@ -45,9 +46,10 @@ void Simulation<Dim>::set_time_step(double dt)
     if (contacts_) {
         // N_i was derived for time.dt (io/case_reader): keep the sub-step Δt/N_i at most what
         // it was there. The small allowance keeps N_i itself at Δt = time.dt despite rounding.
-        const double share = dt / config_.dt;
-        contacts_->settings.substeps = std::max(
-            1, static_cast<int>(std::ceil(share * std::max(1, config_.contact_substeps) - 1e-9)));
+        const double share = dt / config_.time.dt;
+        contacts_->settings.substeps =
+            std::max(1, static_cast<int>(std::ceil(
+                            share * std::max(1, config_.contact.derived.substeps) - 1e-9)));
     }
 }
 
@@ -66,7 +68,7 @@ void Simulation<Dim>::choose_time_step()
             speed_per_cell = std::max(speed_per_cell, bc_.wall(d, side).norm() / h);
         }
     }
-    const double reach = config_.max_courant.value_or(1.0) * h; // [m] allowed per step
+    const double reach = config_.time.max_courant.value_or(1.0) * h; // [m] allowed per step
     for (const Particle<Dim>& body : bodies_) {
         const double s = body.velocity.norm() + magnitude<Dim>(body.omega) * body.radius();
         const double a = body.is_free()
@@ -109,7 +111,7 @@ template <int Dim>
 StepReport Simulation<Dim>::advance_unguarded()
 {
     StepReport report;
-    if (config_.max_courant || config_.is_steady) {
+    if (config_.time.max_courant || config_.time.is_steady) {
         choose_time_step();
     }
     begin_step(); // u^n, U^n, ω^n kept; λ* = λ^n already
@@ -191,14 +193,14 @@ void Simulation<Dim>::move_bodies_and_markers()
 template <int Dim>
 void Simulation<Dim>::track_rest()
 {
-    if (!config_.rest_speed) {
+    if (!config_.time.rest_speed) {
         return;
     }
     const bool is_at_rest =
         std::all_of(bodies_.begin(), bodies_.end(), [&](const Particle<Dim>& body) {
             return !body.is_free() ||
                    body.velocity.norm() + magnitude<Dim>(body.omega) * body.radius() <
-                       *config_.rest_speed;
+                       *config_.time.rest_speed;
         });
     if (!is_at_rest) {
         rest_since_ = -1.0;
@@ -246,10 +248,10 @@ void Simulation<Dim>::finish_load()
             }
         }
     }
-    if (config_.max_courant || config_.is_steady) {
+    if (config_.time.max_courant || config_.time.is_steady) {
         set_time_step(clock_.dt); // the controlled step continues from where it was
-    } else if (clock_.dt != config_.dt) {
-        set_time_step(config_.dt);
+    } else if (clock_.dt != config_.time.dt) {
+        set_time_step(config_.time.dt);
         outer_.is_reusable_assembly() = false; // its coefficients hold the old ρ ΔV / Δt
     }
 }
@@ -257,21 +259,21 @@ void Simulation<Dim>::finish_load()
 template <int Dim>
 bool Simulation<Dim>::is_finished(const StepReport& last) const
 {
-    if (clock_.step >= config_.max_steps) {
+    if (clock_.step >= config_.time.max_steps) {
         return true;
     }
-    if (config_.end_time && clock_.time >= *config_.end_time - 0.5 * clock_.dt) {
+    if (config_.time.end && clock_.time >= *config_.time.end - 0.5 * clock_.dt) {
         return true;
     }
-    if (clock_.time < config_.min_end - 0.5 * clock_.dt) {
+    if (clock_.time < config_.time.min_end - 0.5 * clock_.dt) {
         return false;
     }
-    if (config_.rest_speed && rest_since_ >= 0.0 &&
-        clock_.time - rest_since_ >= config_.rest_duration - 0.5 * clock_.dt) {
+    if (config_.time.rest_speed && rest_since_ >= 0.0 &&
+        clock_.time - rest_since_ >= config_.time.rest_duration - 0.5 * clock_.dt) {
         return true;
     }
-    return config_.steady_tolerance && clock_.step > 1 &&
-           last.rate_of_change < *config_.steady_tolerance;
+    return config_.time.steady_tolerance && clock_.step > 1 &&
+           last.rate_of_change < *config_.time.steady_tolerance;
 }
 
 template class Simulation<2>;

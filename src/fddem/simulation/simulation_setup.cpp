@@ -12,10 +12,11 @@ namespace fddem {
 template <int Dim>
 MacGrid<Dim> make_grid(const CaseConfig& config)
 {
-    if (config.dimension != Dim || config.size.size() != static_cast<std::size_t>(Dim) ||
-        config.cells.size() != static_cast<std::size_t>(Dim)) {
+    const DomainConfig& domain = config.domain;
+    if (domain.dimension != Dim || domain.size.size() != static_cast<std::size_t>(Dim) ||
+        domain.cells.size() != static_cast<std::size_t>(Dim)) {
         throw InputError(config.source_file, 0, "domain.size",
-                         "the case is " + std::to_string(config.dimension) + "-dimensional, not " +
+                         "the case is " + std::to_string(domain.dimension) + "-dimensional, not " +
                              std::to_string(Dim) + "-dimensional");
     }
     Index<Dim> cells{};
@@ -23,10 +24,10 @@ MacGrid<Dim> make_grid(const CaseConfig& config)
     Vec<Dim> length;
     for (int d = 0; d < Dim; ++d) {
         const auto k = static_cast<std::size_t>(d);
-        cells[k] = config.cells[k];
-        length[d] = config.size[k];
-        if (config.origin.size() == static_cast<std::size_t>(Dim)) {
-            origin[d] = config.origin[k];
+        cells[k] = domain.cells[k];
+        length[d] = domain.size[k];
+        if (domain.origin.size() == static_cast<std::size_t>(Dim)) {
+            origin[d] = domain.origin[k];
         }
     }
     return MacGrid<Dim>(cells, origin, length);
@@ -38,21 +39,18 @@ BoundaryConditions<Dim> make_boundary_conditions(const CaseConfig& config)
     BoundaryConditions<Dim> bc = BoundaryConditions<Dim>::closed_box();
     for (int d = 0; d < Dim; ++d) {
         const auto k = static_cast<std::size_t>(d);
-        bc.is_periodic[k] = k < config.periodic.size() && config.periodic[k];
-        for (std::size_t side = 0; side < 2 && k < config.boundary_kind.size(); ++side) {
-            const std::string& kind = config.boundary_kind[k][side];
-            bc.kind[k][side] = kind == "inflow"    ? BoundaryKind::inflow
-                               : kind == "outflow" ? BoundaryKind::outflow
-                                                   : BoundaryKind::wall;
+        bc.is_periodic[k] = k < config.domain.periodic.size() && config.domain.periodic[k];
+        if (k < config.boundaries.size()) {
+            bc.kind[k] = config.boundaries[k];
         }
-        if (k >= config.wall_velocity.size()) {
+        if (k >= config.walls.velocity.size()) {
             continue;
         }
         for (std::size_t side = 0; side < 2; ++side) {
-            bc.wall_velocity[k][side] = vector_of<Dim>(config.wall_velocity[k][side]);
+            bc.wall_velocity[k][side] = vector_of<Dim>(config.walls.velocity[k][side]);
         }
     }
-    bc.inflow = {config.inflow_profile == "parabolic", config.inflow_velocity};
+    bc.inflow = {config.inflow.profile, config.inflow.velocity};
     return bc;
 }
 
@@ -77,9 +75,7 @@ Particles<Dim> make_particles(const CaseConfig& config, const MacGrid<Dim>& grid
         body.shape = Ball<Dim>{b.diameter};
         body.density = b.density;
         body.material = b.material;
-        body.motion = b.motion == "fixed"        ? Motion::fixed
-                      : b.motion == "prescribed" ? Motion::prescribed
-                                                 : Motion::free;
+        body.motion = b.motion;
         body.centre = vector_of<Dim>(b.position);
         if (body.motion != Motion::fixed) {
             body.velocity = vector_of<Dim>(b.velocity);
@@ -90,7 +86,7 @@ Particles<Dim> make_particles(const CaseConfig& config, const MacGrid<Dim>& grid
         const int n_rings = b.n_rings > 0
                                 ? b.n_rings
                                 : rings_for_spacing(body.radius(), grid.spacing().maxCoeff(),
-                                                    config.marker_spacing_ratio);
+                                                    config.coupling.marker_spacing_ratio);
         body.coupling = MarkerCoupling<Dim>(make_ball_markers(body.shape, n_rings));
         bodies.add(std::move(body));
     }
@@ -105,10 +101,11 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
     if (!bodies.has_free_body()) {
         return std::nullopt;
     }
+    const ContactConfig& contact = config.contact;
     const ContactModelInput input{
-        {config.contact_stiffness, config.contact_damping, config.contact_tangential_ratio},
-        config.contact_reference_mass};
-    std::optional<AnyContactModel> model = make_contact_model(config.contact_model, input);
+        {contact.derived.stiffness, contact.derived.damping, contact.tangential_stiffness_ratio},
+        contact.derived.reference_mass};
+    std::optional<AnyContactModel> model = make_contact_model(contact.model, input);
     if (!model) {
         return std::nullopt; // contact.model = "none": no collisions
     }
@@ -123,7 +120,7 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
         smallest = std::min(smallest, body.shape.diameter);
     }
     DemWalls<Dim> walls{grid.origin(), grid.length(), {}};
-    walls.material = config.wall_material;
+    walls.material = config.walls.material;
     for (int d = 0; d < Dim; ++d) {
         const auto axis = static_cast<std::size_t>(d);
         walls.has_walls[axis] = !bc.is_periodic[axis];
@@ -131,13 +128,12 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
             walls.velocity[axis][static_cast<std::size_t>(side)] = bc.wall(d, side);
         }
     }
-    return ContactSetup<Dim>{DemSettings{std::move(*model), config.contact_beta,
-                                         std::max(1, config.contact_substeps),
-                                         config.contact_margin},
-                             config.contact_coupling == "paper",
-                             CellList<Dim>(grid.origin(), grid.length(),
-                                           largest + config.contact_margin + 0.5 * smallest),
-                             walls};
+    return ContactSetup<Dim>{
+        DemSettings{std::move(*model), contact.velocity_damping,
+                    std::max(1, contact.derived.substeps), contact.margin},
+        contact.coupling == ContactCoupling::paper,
+        CellList<Dim>(grid.origin(), grid.length(), largest + contact.margin + 0.5 * smallest),
+        walls};
 }
 
 #define FDDEM_INSTANTIATE_SETUP(DIM)                                                               \

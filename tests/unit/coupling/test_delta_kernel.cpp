@@ -48,8 +48,8 @@ TYPED_TEST(Kernels, VanishesOutsideItsSupport)
 
 TEST(Kernels, NamesSelectKernels)
 {
-    EXPECT_TRUE(std::holds_alternative<HatKernel>(kernel_from_name("hat")));
-    EXPECT_TRUE(std::holds_alternative<Peskin4Kernel>(kernel_from_name("peskin4")));
+    EXPECT_TRUE(std::holds_alternative<HatKernel>(make_kernel(KernelKind::hat)));
+    EXPECT_TRUE(std::holds_alternative<Peskin4Kernel>(make_kernel(KernelKind::peskin4)));
 }
 
 } // namespace

@@ -73,7 +73,7 @@ TEST(BoundaryConditions, ParabolicInflowAndOutflowCarryTheSameVolumeFlux)
     const MacGrid<2> grid({8, 10}, Vec<2>::Zero(), Vec<2>(2.0, 1.0));
     auto bc = BoundaryConditions<2>::closed_box();
     bc.kind[0] = {BoundaryKind::inflow, BoundaryKind::outflow};
-    bc.inflow = {true, 1.5};
+    bc.inflow = {InflowShape::parabolic, 1.5};
     FaceField<2> u(grid);
     for_each_index(grid.face_box(0), [&](const Index<2>& c) {
         u[0](c) = 0.3 + 0.1 * c[1]; // not the inflow's flux
@@ -104,7 +104,7 @@ TEST(BoundaryConditions, HighSideInflowPointsIntoTheBox)
     auto bc = BoundaryConditions<3>::closed_box();
     bc.kind[2] = {BoundaryKind::outflow, BoundaryKind::inflow};
     bc.is_periodic = {true, false, false};
-    bc.inflow = {true, 2.0};
+    bc.inflow = {InflowShape::parabolic, 2.0};
     // Parabolic over the walled transverse axis y only (x is periodic): 2 · 4 · ½ · ½ = 2.
     EXPECT_DOUBLE_EQ(inflow_velocity(grid, bc, 2, 1, Vec<3>(0.3, 0.5, 1.0)), -2.0);
     EXPECT_DOUBLE_EQ(inflow_velocity(grid, bc, 2, 1, Vec<3>(0.3, 0.25, 1.0)), -1.5);

@@ -122,15 +122,15 @@ TEST(MomentumSolve, AutoChoosesTheMultigridWhereViscosityDominatesTheTimeTerm)
     const MacGrid<2> grid({128, 384}, Vec<2>::Zero(), Vec<2>(2.0, 6.0));
     const double share = time_term_share(grid, FluidProperties{1.0, 0.1}, 0.005);
     EXPECT_NEAR(share, 0.048828125 / (0.048828125 + 0.4), 1e-15);
-    EXPECT_EQ(momentum_cycles_for("auto", 1, share), 1);
+    EXPECT_EQ(momentum_cycles_for(MomentumSolver::automatic, 1, share), 1);
     // The drafting–kissing–tumbling case: h = 1/96, μ = 0.01, Δt = 0.001: the time term
     // dominates and Gauss–Seidel converges quickly by itself.
     const MacGrid<2> dkt({192, 768}, Vec<2>::Zero(), Vec<2>(2.0, 8.0));
     const double dkt_share = time_term_share(dkt, FluidProperties{1.0, 0.01}, 0.001);
     EXPECT_GT(dkt_share, 0.7);
-    EXPECT_EQ(momentum_cycles_for("auto", 1, dkt_share), 0);
-    EXPECT_EQ(momentum_cycles_for("multigrid", 2, dkt_share), 2);
-    EXPECT_EQ(momentum_cycles_for("gauss_seidel", 1, share), 0);
+    EXPECT_EQ(momentum_cycles_for(MomentumSolver::automatic, 1, dkt_share), 0);
+    EXPECT_EQ(momentum_cycles_for(MomentumSolver::multigrid, 2, dkt_share), 2);
+    EXPECT_EQ(momentum_cycles_for(MomentumSolver::gauss_seidel, 1, share), 0);
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 
 #include "fddem/contact/hertz_mindlin.hpp"
 #include "fddem/core/errors.hpp"
+#include "fddem/io/case_names.hpp"
 #include "fddem/io/case_reader.hpp"
 #include "fddem/io/case_schema.hpp"
 
@@ -42,32 +43,32 @@ to = [0.5, 2.0]
 TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
 {
     const CaseConfig c = read_case_string(valid_case, "valid.toml");
-    EXPECT_EQ(c.dimension, 2);
-    EXPECT_EQ(c.cells, (std::vector<int>{16, 32}));
-    EXPECT_EQ(c.size, (std::vector<double>{1.0, 2.0}));
-    EXPECT_EQ(c.origin, (std::vector<double>{0.0, 0.0}));
-    EXPECT_EQ(c.periodic, (std::vector<bool>{false, false}));
-    EXPECT_DOUBLE_EQ(c.wall_velocity[1][1][0], 1.0);
-    EXPECT_DOUBLE_EQ(c.wall_velocity[0][0][1], 0.0);
-    EXPECT_DOUBLE_EQ(c.viscosity, 0.01);
-    ASSERT_TRUE(c.end_time.has_value());
-    EXPECT_DOUBLE_EQ(*c.end_time, 1.0);
-    EXPECT_FALSE(c.steady_tolerance.has_value());
-    EXPECT_DOUBLE_EQ(c.tolerance, 1e-5);
-    EXPECT_EQ(c.momentum_sweeps, 4);
-    EXPECT_EQ(c.momentum_cycles, 1);
-    EXPECT_EQ(c.momentum_solver, "auto");
-    EXPECT_EQ(c.convection, "central");
-    ASSERT_EQ(c.lines.size(), 1U);
-    EXPECT_EQ(c.lines[0].n_points, 101);
+    EXPECT_EQ(c.domain.dimension, 2);
+    EXPECT_EQ(c.domain.cells, (std::vector<int>{16, 32}));
+    EXPECT_EQ(c.domain.size, (std::vector<double>{1.0, 2.0}));
+    EXPECT_EQ(c.domain.origin, (std::vector<double>{0.0, 0.0}));
+    EXPECT_EQ(c.domain.periodic, (std::vector<bool>{false, false}));
+    EXPECT_DOUBLE_EQ(c.walls.velocity[1][1][0], 1.0);
+    EXPECT_DOUBLE_EQ(c.walls.velocity[0][0][1], 0.0);
+    EXPECT_DOUBLE_EQ(c.fluid.viscosity, 0.01);
+    ASSERT_TRUE(c.time.end.has_value());
+    EXPECT_DOUBLE_EQ(*c.time.end, 1.0);
+    EXPECT_FALSE(c.time.steady_tolerance.has_value());
+    EXPECT_DOUBLE_EQ(c.simple.tolerance, 1e-5);
+    EXPECT_EQ(c.simple.momentum_sweeps, 4);
+    EXPECT_EQ(c.simple.momentum_cycles, 1);
+    EXPECT_EQ(name_of(c.simple.momentum_solver), "auto");
+    EXPECT_EQ(name_of(c.simple.convection), "central");
+    ASSERT_EQ(c.output.lines.size(), 1U);
+    EXPECT_EQ(c.output.lines[0].n_points, 101);
 }
 
 TEST(CaseReader, CaseAsRunReadsBackToTheSameCase)
 {
     const CaseConfig first = read_case_string(valid_case, "valid.toml", {"time.dt=0.02"});
     const CaseConfig second = read_case_string(first.as_run, "case.toml");
-    EXPECT_DOUBLE_EQ(second.dt, 0.02);
-    EXPECT_EQ(second.cells, first.cells);
+    EXPECT_DOUBLE_EQ(second.time.dt, 0.02);
+    EXPECT_EQ(second.domain.cells, first.domain.cells);
     EXPECT_EQ(second.as_run.substr(second.as_run.find("\n\n")),
               first.as_run.substr(first.as_run.find("\n\n")));
 }
@@ -77,10 +78,10 @@ TEST(CaseReader, OverridesSetAndAddKeys)
     const CaseConfig c = read_case_string(
         valid_case, "valid.toml",
         {"domain.cells=[8,8]", "simple.convection=upwind", "time.steady_tolerance=1e-6"});
-    EXPECT_EQ(c.cells, (std::vector<int>{8, 8}));
-    EXPECT_EQ(c.convection, "upwind");
-    ASSERT_TRUE(c.steady_tolerance.has_value());
-    EXPECT_DOUBLE_EQ(*c.steady_tolerance, 1e-6);
+    EXPECT_EQ(c.domain.cells, (std::vector<int>{8, 8}));
+    EXPECT_EQ(name_of(c.simple.convection), "upwind");
+    ASSERT_TRUE(c.time.steady_tolerance.has_value());
+    EXPECT_DOUBLE_EQ(*c.time.steady_tolerance, 1e-6);
 }
 
 TEST(CaseReader, OverridesReachOneOrEveryEntryOfATableArray)
@@ -96,7 +97,7 @@ TEST(CaseReader, OverridesReachOneOrEveryEntryOfATableArray)
         read_case_string(bodies, "valid.toml", {"bodies.density=3.5", "output.lines.1.points=7"});
     EXPECT_DOUBLE_EQ(every.bodies[0].density, 3.5);
     EXPECT_DOUBLE_EQ(every.bodies[1].density, 3.5);
-    EXPECT_EQ(every.lines[0].n_points, 7);
+    EXPECT_EQ(every.output.lines[0].n_points, 7);
 }
 
 TEST(CaseReader, ThreeDimensionalCaseNeedsThreeEntriesEverywhere)
@@ -113,9 +114,9 @@ dt = 0.1
 end = 1.0
 )";
     const CaseConfig c = read_case_string(text, "3d.toml");
-    EXPECT_EQ(c.dimension, 3);
-    EXPECT_EQ(c.periodic, (std::vector<bool>{true, false, true}));
-    EXPECT_EQ(c.wall_velocity.size(), 3U);
+    EXPECT_EQ(c.domain.dimension, 3);
+    EXPECT_EQ(c.domain.periodic, (std::vector<bool>{true, false, true}));
+    EXPECT_EQ(c.walls.velocity.size(), 3U);
 }
 
 struct BadCase {
@@ -739,9 +740,9 @@ void expect_reads_back(const std::string& text, const std::string& name)
         FAIL() << "the case as run does not read back: " << e.formatted();
     }
     EXPECT_EQ(case_body(second.as_run), case_body(first.as_run));
-    EXPECT_EQ(second.periodic, first.periodic);
-    EXPECT_EQ(second.gravity, first.gravity);
-    EXPECT_EQ(second.wall_velocity, first.wall_velocity);
+    EXPECT_EQ(second.domain.periodic, first.domain.periodic);
+    EXPECT_EQ(second.fluid.gravity, first.fluid.gravity);
+    EXPECT_EQ(second.walls.velocity, first.walls.velocity);
 }
 
 TEST(CaseReader, PeriodicCaseAsRunReadsBack)
@@ -808,14 +809,16 @@ TEST(CaseReader, ContactStiffnessAndSubstepsAreDerivedFromRestitutionAndDuration
     // e = exp(−ζπ/√(1−ζ²)), t_c = π/(ω₀√(1−ζ²)), k = m ω₀², c = 2ζ√(k m)
     const double zeta = -std::log(0.5) / std::sqrt(M_PI * M_PI + std::log(0.5) * std::log(0.5));
     const double omega_0 = M_PI / 0.001 / std::sqrt(1.0 - zeta * zeta);
-    EXPECT_NEAR(c.contact_stiffness, mass * omega_0 * omega_0, 1e-9 * c.contact_stiffness);
-    EXPECT_NEAR(c.contact_damping, 2.0 * zeta * std::sqrt(c.contact_stiffness * mass),
-                1e-9 * c.contact_damping);
-    EXPECT_NEAR(c.contact_duration, 0.001, 1e-15);
-    EXPECT_NEAR(c.contact_restitution, 0.5, 1e-12);
+    EXPECT_NEAR(c.contact.derived.stiffness, mass * omega_0 * omega_0,
+                1e-9 * c.contact.derived.stiffness);
+    EXPECT_NEAR(c.contact.derived.damping,
+                2.0 * zeta * std::sqrt(c.contact.derived.stiffness * mass),
+                1e-9 * c.contact.derived.damping);
+    EXPECT_NEAR(c.contact.derived.duration, 0.001, 1e-15);
+    EXPECT_NEAR(c.contact.derived.restitution, 0.5, 1e-12);
     // 80 sub-steps per collision of two such bodies (reduced mass m/2, undamped duration).
-    const double pair = M_PI * std::sqrt(0.5 * mass / c.contact_stiffness);
-    EXPECT_EQ(c.contact_substeps, static_cast<int>(std::ceil(80.0 * 0.01 / pair)));
+    const double pair = M_PI * std::sqrt(0.5 * mass / c.contact.derived.stiffness);
+    EXPECT_EQ(c.contact.derived.substeps, static_cast<int>(std::ceil(80.0 * 0.01 / pair)));
     EXPECT_NE(c.as_run.find("contact_substeps"), std::string::npos);
 }
 
@@ -829,33 +832,34 @@ TEST(CaseReader, HertzMindlinSurfacesImpactSpeedAndSubstepsAreDerived)
     const CaseConfig c = read_case_string(text, "hertz.toml", {});
     // Surfaces: a body's own value, else [contact]'s; ν defaults to 0.3.
     EXPECT_EQ(c.bodies[0].material.friction, 0.4);
-    EXPECT_EQ(c.wall_material.friction, 0.1);
+    EXPECT_EQ(c.walls.material.friction, 0.1);
     EXPECT_EQ(c.bodies[0].material.rolling_friction, 0.01);
     EXPECT_EQ(c.bodies[0].material.restitution, 0.5);
-    EXPECT_EQ(c.wall_material.young_modulus, 1e6);
-    EXPECT_EQ(c.wall_material.poisson_ratio, 0.3);
+    EXPECT_EQ(c.walls.material.young_modulus, 1e6);
+    EXPECT_EQ(c.walls.material.poisson_ratio, 0.3);
     // Impact speed: √(2 |g| L) + 2 · 0 (bodies at rest) + 1 (the lid), L = 2.
-    EXPECT_NEAR(c.contact_impact_velocity, std::sqrt(40.0) + 1.0, 1e-12);
+    EXPECT_NEAR(c.contact.derived.impact_velocity, std::sqrt(40.0) + 1.0, 1e-12);
     // The shortest collision is two such bodies (m* = m/2, R* = R/2) rather than one and a
     // wall (m, R): t_c ∝ (m*²/R*)^{1/5}. 80 sub-steps in it.
     const double mass = 2.0 * M_PI * 0.0625;
     const Material& surface = c.bodies[0].material;
     const PairSide body = ball_side(mass, 0.5 * mass * 0.0625, 0.25, surface, true);
     const HertzMindlin hertz;
-    const double pair =
-        hertz.elastic_collision_time(make_contact_pair(body, body), c.contact_impact_velocity);
+    const double pair = hertz.elastic_collision_time(make_contact_pair(body, body),
+                                                     c.contact.derived.impact_velocity);
     const double wall = hertz.elastic_collision_time(
-        make_contact_pair(body, wall_side(c.wall_material)), c.contact_impact_velocity);
+        make_contact_pair(body, wall_side(c.walls.material)), c.contact.derived.impact_velocity);
     EXPECT_LT(pair, wall);
-    EXPECT_EQ(c.contact_substeps, static_cast<int>(std::ceil(80.0 * 0.01 / pair)));
-    EXPECT_NEAR(c.contact_duration, wall, 1e-15); // recorded: the wall collision
-    EXPECT_NEAR(c.contact_restitution, 0.5, 1e-15);
+    EXPECT_EQ(c.contact.derived.substeps, static_cast<int>(std::ceil(80.0 * 0.01 / pair)));
+    EXPECT_NEAR(c.contact.derived.duration, wall, 1e-15); // recorded: the wall collision
+    EXPECT_NEAR(c.contact.derived.restitution, 0.5, 1e-15);
     for (const char* key : {"contact_impact_velocity", "contact_damping_constant",
                             "contact_duration", "contact_substeps"}) {
         EXPECT_NE(c.as_run.find(key), std::string::npos) << key;
     }
     // The case as run reads back to the same case.
-    EXPECT_EQ(read_case_string(c.as_run, "case.toml", {}).contact_substeps, c.contact_substeps);
+    EXPECT_EQ(read_case_string(c.as_run, "case.toml", {}).contact.derived.substeps,
+              c.contact.derived.substeps);
 }
 
 TEST(CaseReader, MissingFileIsAnInputError)

@@ -333,7 +333,7 @@ TEST(CheckpointRestart, AdaptiveTimeStepContinuesBitForBit)
         for (int k = 0; k < 21; ++k) {
             static_cast<void>(probe.advance());
         }
-        EXPECT_LT(probe.clock().dt, courant.dt) << "the limit should act by the checkpoint";
+        EXPECT_LT(probe.clock().dt, courant.time.dt) << "the limit should act by the checkpoint";
     }
     expect_bit_identical_continuation<2>(courant, 21, 8);
     const CaseConfig steady = read_case_string(cavity_case(), "test:steady cavity",

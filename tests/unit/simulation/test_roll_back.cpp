@@ -23,7 +23,7 @@ using fddem::Vec;
 fddem::CaseConfig cavity_with_disk()
 {
     fddem::CaseConfig c = fddem::test::cavity_config(24, 100.0, 0.01, 1.0);
-    c.gravity = {0.0, -10.0};
+    c.fluid.gravity = {0.0, -10.0};
     fddem::BodyConfig disk;
     disk.diameter = 0.25;
     disk.density = 3.0;
@@ -31,7 +31,7 @@ fddem::CaseConfig cavity_with_disk()
     disk.velocity = {0.0, 0.0};
     disk.n_rings = 3;
     c.bodies.push_back(disk);
-    c.contact_model = "none";
+    c.contact.model = fddem::ContactModelKind::none;
     return c;
 }
 

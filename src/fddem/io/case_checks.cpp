@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/io/case_checks.hpp"
+
+#include "fddem/io/case_document.hpp"
+#include "fddem/io/case_names.hpp"
+#include "fddem/io/case_schema.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <set>
+
+namespace fddem {
+namespace {
+
+bool has_free_body(const CaseConfig& c)
+{
+    return std::any_of(c.bodies.begin(), c.bodies.end(),
+                       [](const BodyConfig& b) { return b.motion == Motion::free; });
+}
+
+/// A way to stop, a pseudo-time march that can arrive, an end after the earliest end.
+void check_time(const CaseDocument& doc, const CaseConfig& c)
+{
+    const TimeConfig& time = c.time;
+    if (!time.end && !time.steady_tolerance && !time.rest_speed) {
+        doc.fail("time.end", doc.node("time"),
+                 "give time.end, time.steady_tolerance or time.rest_speed: the run needs "
+                 "a way to stop");
+    }
+    if (time.is_steady && !time.steady_tolerance) {
+        doc.fail("time.steady", doc.node("time", "steady"),
+                 "a pseudo-time march needs time.steady_tolerance, the residual at "
+                 "which it has arrived");
+    }
+    if (time.is_steady && has_free_body(c)) {
+        doc.fail("time.steady", doc.node("time", "steady"),
+                 "free bodies have no steady state to march to: use time.max_courant "
+                 "for an adaptive, time-accurate step");
+    }
+    if (time.rest_speed && !has_free_body(c)) {
+        doc.fail("time.rest_speed", doc.node("time", "rest_speed"),
+                 "the case has no free body to come to rest");
+    }
+    if (time.end && time.min_end > *time.end) {
+        doc.fail("time.min_end", doc.node("time", "min_end"),
+                 fmt::format("the earliest end {:g} s is after the end time {:g} s", time.min_end,
+                             *time.end));
+    }
+    if (time.end && time.dt > *time.end) {
+        doc.fail("time.dt", doc.node("time", "dt"),
+                 fmt::format("the time step {:g} s is longer than the end time {:g} s", time.dt,
+                             *time.end));
+    }
+}
+
+/// Walls and side kinds only where the box has sides; a wall only slides along itself.
+void check_sides(const CaseDocument& doc, const CaseConfig& c)
+{
+    for (std::size_t d = 0; d < static_cast<std::size_t>(c.domain.dimension); ++d) {
+        const bool is_periodic = c.domain.periodic[d];
+        for (std::size_t side = 0; side < 2; ++side) {
+            const std::string wall = side_names.at(d).at(side);
+            const std::string key = "walls." + wall;
+            const toml::node* n = doc.node("walls", wall);
+            const bool is_given = doc.is_given("walls", wall);
+            if (is_periodic && is_given) {
+                doc.fail(key, n,
+                         "axis " + std::to_string(d) +
+                             " is periodic (domain.periodic): it has no walls");
+            }
+            const std::string boundary_key = "boundaries." + wall;
+            const BoundaryKind kind = c.boundaries[d][side];
+            if (is_periodic && doc.is_given("boundaries", wall)) {
+                doc.fail(boundary_key, doc.node("boundaries", wall),
+                         "axis " + std::to_string(d) +
+                             " is periodic (domain.periodic): it has no sides");
+            }
+            if (kind != BoundaryKind::wall && is_given) {
+                doc.fail(key, n,
+                         "the " + wall + " side is an " + name_of(kind) + " (" + boundary_key +
+                             "), not a wall: it takes no wall velocity");
+            }
+            const double normal = c.walls.velocity[d][side][d];
+            if (normal != 0.0) {
+                doc.fail(key, n,
+                         fmt::format("the wall-normal component is {:g}; a wall may only "
+                                     "slide along itself (normal component 0)",
+                                     normal));
+            }
+        }
+    }
+}
+
+/// An inflow needs a speed and an outflow (else the Poisson problem of the pressure
+/// correction has no solution: the fluid let in could not leave); inflow keys without an
+/// inflow would be ignored.
+void check_inflow_and_outflow(const CaseDocument& doc, const CaseConfig& c)
+{
+    bool has_inflow = false;
+    bool has_outflow = false;
+    const toml::node* first_inflow = nullptr;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(c.domain.dimension); ++d) {
+        if (c.domain.periodic[d]) {
+            continue;
+        }
+        for (std::size_t side = 0; side < 2; ++side) {
+            const BoundaryKind kind = c.boundaries[d][side];
+            if (kind == BoundaryKind::inflow && !has_inflow) {
+                has_inflow = true;
+                first_inflow = doc.node("boundaries", side_names.at(d).at(side));
+            }
+            has_outflow = has_outflow || kind == BoundaryKind::outflow;
+        }
+    }
+    const toml::node* velocity = doc.node("inflow", "velocity");
+    if (has_inflow && velocity == nullptr) {
+        doc.fail("inflow.velocity", first_inflow,
+                 "a side is an inflow: give its speed, inflow.velocity");
+    }
+    if (!has_inflow && velocity != nullptr) {
+        doc.fail("inflow.velocity", velocity,
+                 "no side is an inflow (boundaries.*): inflow.velocity would be ignored");
+    }
+    if (has_inflow && !has_outflow) {
+        doc.fail("boundaries", first_inflow,
+                 "an inflow needs an outflow side (boundaries.* = \"outflow\"): the "
+                 "fluid let in must leave");
+    }
+}
+
+bool is_valid_sample_name(const std::string& name)
+{
+    return !name.empty() && std::all_of(name.begin(), name.end(), [](char ch) {
+        return std::isalnum(static_cast<unsigned char>(ch)) != 0 || ch == '_' || ch == '-';
+    });
+}
+
+/// Line samples: valid, distinct names; both ends in the box.
+void check_lines(const CaseDocument& doc, const CaseConfig& c)
+{
+    std::set<std::string> names;
+    for (std::size_t k = 0; k < c.output.lines.size(); ++k) {
+        const LineSample& line = c.output.lines[k];
+        const toml::table& t = doc.entry("output.lines", k);
+        if (!is_valid_sample_name(line.name)) {
+            doc.fail("output.lines.name", t.get("name"),
+                     "'" + line.name + "' is not a valid sample name (letters, digits, _, -)");
+        }
+        if (!names.insert(line.name).second) {
+            doc.fail("output.lines.name", t.get("name"),
+                     "the sample name '" + line.name + "' is used twice");
+        }
+        for (const std::string end : {"from", "to"}) {
+            const std::vector<double>& p = end == "from" ? line.from : line.to;
+            for (std::size_t d = 0; d < static_cast<std::size_t>(c.domain.dimension); ++d) {
+                const double lo = c.domain.origin[d];
+                const double hi = c.domain.origin[d] + c.domain.size[d];
+                if (p[d] < lo || p[d] > hi) {
+                    doc.fail("output.lines." + end, t.get(end),
+                             fmt::format("point is outside the box on axis {}: {:g} not in "
+                                         "[{:g}, {:g}]",
+                                         d, p[d], lo, hi));
+                }
+            }
+        }
+    }
+}
+
+} // namespace
+
+void check_case(const CaseDocument& doc, const CaseConfig& c)
+{
+    check_time(doc, c);
+    check_sides(doc, c);
+    check_inflow_and_outflow(doc, c);
+    check_lines(doc, c);
+}
+
+void check_bodies(const CaseDocument& doc, const CaseConfig& c)
+{
+    const DomainConfig& box = c.domain;
+    const auto dimension = static_cast<std::size_t>(box.dimension);
+    double h = box.size[0] / box.cells[0];
+    for (std::size_t d = 1; d < dimension; ++d) {
+        h = std::max(h, box.size[d] / box.cells[d]);
+    }
+    for (std::size_t k = 0; k < c.bodies.size(); ++k) {
+        const BodyConfig& b = c.bodies[k];
+        const toml::table& t = doc.entry("bodies", k);
+        if ((b.shape == BodyShape::disk) != (dimension == 2)) {
+            doc.fail("bodies.shape", t.get("shape"),
+                     "a " + name_of(b.shape) + " does not fit a " + std::to_string(dimension) +
+                         "D case (disk: 2D, sphere: 3D)");
+        }
+        if (b.diameter < 4.0 * h) {
+            doc.fail("bodies.diameter", t.get("diameter"),
+                     fmt::format("the body is {:.2g} cells across; at least 4 are needed "
+                                 "for the marker layout (refine domain.cells)",
+                                 b.diameter / h));
+        }
+        const double r = 0.5 * b.diameter;
+        for (std::size_t d = 0; d < dimension; ++d) {
+            if (box.periodic[d]) {
+                continue;
+            }
+            const double lo = box.origin[d];
+            const double hi = box.origin[d] + box.size[d];
+            if (b.position[d] - r < lo || b.position[d] + r > hi) {
+                doc.fail("bodies.position", t.get("position"),
+                         fmt::format("body {} reaches outside the box on axis {} (centre "
+                                     "{:g}, radius {:g}, box [{:g}, {:g}])",
+                                     k, d, b.position[d], r, lo, hi));
+            }
+        }
+        for (std::size_t j = 0; j < k; ++j) {
+            const BodyConfig& o = c.bodies[j];
+            double distance2 = 0.0;
+            for (std::size_t d = 0; d < dimension; ++d) {
+                distance2 += std::pow(b.position[d] - o.position[d], 2);
+            }
+            if (std::sqrt(distance2) < 0.5 * (b.diameter + o.diameter)) {
+                doc.fail("bodies.position", t.get("position"),
+                         fmt::format("body {} overlaps body {}", k, j));
+            }
+        }
+    }
+}
+
+} // namespace fddem
