@@ -201,6 +201,16 @@ const toml::table& CaseDocument::entry(const std::string& path, std::size_t k) c
     return *(*table_array(path))[k].as_table();
 }
 
+void CaseDocument::insert_default(const std::string& section, const std::string& name,
+                                  const toml::node& value)
+{
+    if (!doc_.contains(section)) {
+        doc_.insert(section, toml::table{});
+    }
+    doc_.get_as<toml::table>(section)->insert(name, value);
+    defaulted_.insert(section + "." + name);
+}
+
 bool CaseDocument::is_given(const std::string& section, const std::string& name) const
 {
     return node(section, name) != nullptr && defaulted_.count(section + "." + name) == 0;

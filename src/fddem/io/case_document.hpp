@@ -28,7 +28,6 @@ public:
     [[noreturn]] void fail(const std::string& key, const toml::node* node,
                            const std::string& message) const;
 
-    [[nodiscard]] toml::table& root() noexcept { return doc_; }
     [[nodiscard]] const toml::table& root() const noexcept { return doc_; }
 
     /// A section ([fluid]), or nullptr.
@@ -41,8 +40,9 @@ public:
     /// Entry `k` of a table array (which must have it).
     [[nodiscard]] const toml::table& entry(const std::string& path, std::size_t k) const;
 
-    /// Notes that `full_key` holds the schema's default, filled in.
-    void mark_default(const std::string& full_key) { defaulted_.insert(full_key); }
+    /// Fills in the schema's default `value` of a key the case does not give.
+    void insert_default(const std::string& section, const std::string& name,
+                        const toml::node& value);
     /// The key is in the case as given (or set by --set), not filled in as a default.
     [[nodiscard]] bool is_given(const std::string& section, const std::string& name) const;
 

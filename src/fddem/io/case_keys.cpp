@@ -232,13 +232,7 @@ void check_section_keys(CaseDocument& doc, const std::vector<KeySpec>& schema, i
             if (*spec.value == "none") {
                 continue;
             }
-            toml::table& root = doc.root();
-            if (!root.contains(spec.section)) {
-                root.insert(spec.section, toml::table{});
-            }
-            root.get_as<toml::table>(spec.section)
-                ->insert(spec.name, *default_node(spec, dimension).get("v"));
-            doc.mark_default(spec.full_name());
+            doc.insert_default(spec.section, spec.name, *default_node(spec, dimension).get("v"));
             continue;
         }
         check_value(spec, *n, dimension, doc, spec.full_name());

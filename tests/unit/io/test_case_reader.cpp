@@ -885,6 +885,161 @@ TEST(CaseSchema, EveryKeyIsDocumentedOnceWithARange)
     }
 }
 
+TEST(CaseSchema, EveryKeyButTheDerivedOnesSetsAField)
+{
+    for (const KeySpec& spec : case_schema()) {
+        EXPECT_EQ(static_cast<bool>(spec.set), spec.section != "derived") << spec.full_name();
+    }
+}
+
+/// Each key lands in its own field: a case giving keys values other than their defaults reads
+/// back to those values (a key bound to the wrong field, or to none, fails here).
+TEST(CaseSchema, EachKeySetsItsOwnField)
+{
+    const std::string text = replace(valid_case, "[time]\n", R"([inflow]
+profile = "parabolic"
+velocity = 0.7
+[boundaries]
+x_low = "inflow"
+x_high = "outflow"
+[simple]
+tolerance = 1e-4
+max_outer_iterations = 12
+velocity_relaxation = 0.8
+pressure_relaxation = 0.6
+pressure_update = "standard"
+acceleration_depth = 3
+momentum_sweeps = 6
+momentum_cycles = 2
+momentum_solver = "gauss_seidel"
+convection = "upwind"
+pressure_solver = "hypre"
+fft_planning = "measure"
+linear_tolerance = 1e-7
+linear_max_iterations = 33
+[coupling]
+kernel = "roma3"
+marker_spacing_ratio = 1.2
+[output]
+directory = "somewhere"
+field_interval = 0.25
+particle_interval = 0.125
+log_interval = 9
+[checkpoint]
+step_interval = 5
+time_interval = 0.5
+keep = 4
+[time]
+rest_duration = 0.3
+min_end = 0.2
+max_steps = 77
+max_courant = 0.4
+)");
+    const CaseConfig c = read_case_string(text, "every.toml");
+    EXPECT_EQ(c.title, "cavity");
+    EXPECT_EQ(c.inflow.profile, InflowShape::parabolic);
+    EXPECT_EQ(c.inflow.velocity, 0.7);
+    EXPECT_EQ(c.boundaries[0][0], BoundaryKind::inflow);
+    EXPECT_EQ(c.boundaries[0][1], BoundaryKind::outflow);
+    EXPECT_EQ(c.boundaries[1][0], BoundaryKind::wall);
+    EXPECT_EQ(c.time.rest_duration, 0.3);
+    EXPECT_EQ(c.time.min_end, 0.2);
+    EXPECT_EQ(c.time.max_steps, 77);
+    EXPECT_EQ(c.time.max_courant, 0.4);
+    const SimpleConfig& simple = c.simple;
+    EXPECT_EQ(simple.tolerance, 1e-4);
+    EXPECT_EQ(simple.max_outer_iterations, 12);
+    EXPECT_EQ(simple.velocity_relaxation, 0.8);
+    EXPECT_EQ(simple.pressure_relaxation, 0.6);
+    EXPECT_EQ(simple.pressure_update, PressureUpdate::standard);
+    EXPECT_EQ(simple.acceleration_depth, 3);
+    EXPECT_EQ(simple.momentum_sweeps, 6);
+    EXPECT_EQ(simple.momentum_cycles, 2);
+    EXPECT_EQ(simple.momentum_solver, MomentumSolver::gauss_seidel);
+    EXPECT_EQ(simple.convection, ConvectionScheme::upwind);
+    EXPECT_EQ(simple.pressure_solver, PoissonSolverKind::hypre);
+    EXPECT_EQ(simple.fft_planning, FftPlanning::measure);
+    EXPECT_EQ(simple.linear_tolerance, 1e-7);
+    EXPECT_EQ(simple.linear_max_iterations, 33);
+    EXPECT_EQ(c.coupling.kernel, KernelKind::roma3);
+    EXPECT_EQ(c.coupling.marker_spacing_ratio, 1.2);
+    EXPECT_EQ(c.output.directory, "somewhere");
+    EXPECT_EQ(c.output.field_interval, 0.25);
+    EXPECT_EQ(c.output.particle_interval, 0.125);
+    EXPECT_EQ(c.output.log_interval, 9);
+    EXPECT_EQ(c.checkpoint.step_interval, 5);
+    EXPECT_EQ(c.checkpoint.time_interval, 0.5);
+    EXPECT_EQ(c.checkpoint.keep, 4);
+}
+
+TEST(CaseSchema, EachBodyAndContactKeySetsItsOwnField)
+{
+    const std::string walls = R"(y_high = [1.0, 0.0]
+young_modulus = 3e6
+poisson_ratio = 0.2
+friction = 0.3
+rolling_friction = 0.02
+restitution = 0.8
+)";
+    const std::string text = replace(valid_case, "y_high = [1.0, 0.0]\n", walls) + R"([[bodies]]
+shape = "disk"
+diameter = 0.5
+density = 2.0
+position = [0.5, 1.0]
+velocity = [0.1, -0.2]
+omega = 0.3
+motion = "prescribed"
+n_rings = 5
+friction = 0.4
+rolling_friction = 0.05
+young_modulus = 2e6
+poisson_ratio = 0.25
+restitution = 0.9
+[[bodies]]
+diameter = 0.5
+density = 3.0
+position = [0.5, 1.6]
+[contact]
+model = "hertz_mindlin"
+coupling = "additive"
+young_modulus = 1e6
+impact_velocity = 2.0
+velocity_damping = 0.5
+margin = 0.01
+substeps = 400
+)";
+    const CaseConfig c = read_case_string(text, "bodies.toml");
+    ASSERT_EQ(c.bodies.size(), 2U);
+    const BodyConfig& b = c.bodies[0];
+    EXPECT_EQ(b.shape, BodyShape::disk);
+    EXPECT_EQ(b.diameter, 0.5);
+    EXPECT_EQ(b.density, 2.0);
+    EXPECT_EQ(b.position, (std::vector<double>{0.5, 1.0}));
+    EXPECT_EQ(b.velocity, (std::vector<double>{0.1, -0.2}));
+    EXPECT_EQ(b.omega, 0.3);
+    EXPECT_EQ(b.motion, Motion::prescribed);
+    EXPECT_EQ(b.n_rings, 5);
+    EXPECT_EQ(b.material.friction, 0.4);
+    EXPECT_EQ(b.material.rolling_friction, 0.05);
+    EXPECT_EQ(b.material.young_modulus, 2e6);
+    EXPECT_EQ(b.material.poisson_ratio, 0.25);
+    EXPECT_EQ(b.material.restitution, 0.9);
+    EXPECT_EQ(c.bodies[1].density, 3.0);
+    EXPECT_EQ(c.bodies[1].material.young_modulus, 1e6); // [contact]'s
+    EXPECT_EQ(c.walls.material.young_modulus, 3e6);
+    EXPECT_EQ(c.walls.material.poisson_ratio, 0.2);
+    EXPECT_EQ(c.walls.material.friction, 0.3);
+    EXPECT_EQ(c.walls.material.rolling_friction, 0.02);
+    EXPECT_EQ(c.walls.material.restitution, 0.8);
+    EXPECT_EQ(c.contact.model, ContactModelKind::hertz_mindlin);
+    EXPECT_EQ(c.contact.coupling, ContactCoupling::additive);
+    EXPECT_EQ(c.contact.impact_velocity, 2.0);
+    EXPECT_EQ(c.contact.derived.impact_velocity, 2.0);
+    EXPECT_EQ(c.contact.velocity_damping, 0.5);
+    EXPECT_EQ(c.contact.margin, 0.01);
+    EXPECT_EQ(c.contact.derived.substeps, 400);
+}
+
 TEST(CaseSchema, DocsCaseFileIsUpToDate)
 {
     std::ifstream in(std::string(FDDEM_SOURCE_DIR) + "/docs/case-file.md");
