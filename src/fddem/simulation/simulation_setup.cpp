@@ -21,6 +21,7 @@ MacGrid<Dim> make_grid(const CaseConfig& config)
     Index<Dim> cells{};
     Vec<Dim> origin = Vec<Dim>::Zero();
     Vec<Dim> length;
+    std::array<bool, Dim> is_periodic{};
     for (int d = 0; d < Dim; ++d) {
         const auto k = static_cast<std::size_t>(d);
         cells[k] = config.cells[k];
@@ -28,8 +29,9 @@ MacGrid<Dim> make_grid(const CaseConfig& config)
         if (config.origin.size() == static_cast<std::size_t>(Dim)) {
             origin[d] = config.origin[k];
         }
+        is_periodic[k] = k < config.periodic.size() && config.periodic[k];
     }
-    return MacGrid<Dim>(cells, origin, length);
+    return MacGrid<Dim>(cells, origin, length, is_periodic);
 }
 
 template <int Dim>
@@ -131,13 +133,11 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
             walls.velocity[axis][static_cast<std::size_t>(side)] = bc.wall(d, side);
         }
     }
-    return ContactSetup<Dim>{DemSettings{std::move(*model), config.contact_beta,
-                                         std::max(1, config.contact_substeps),
-                                         config.contact_margin},
-                             config.contact_coupling == "paper",
-                             CellList<Dim>(grid.origin(), grid.length(),
-                                           largest + config.contact_margin + 0.5 * smallest),
-                             walls};
+    return ContactSetup<Dim>{
+        DemSettings{std::move(*model), config.contact_beta, std::max(1, config.contact_substeps),
+                    config.contact_margin},
+        config.contact_coupling == "paper",
+        CellList<Dim>(grid.domain(), largest + config.contact_margin + 0.5 * smallest), walls};
 }
 
 #define FDDEM_INSTANTIATE_SETUP(DIM)                                                               \

@@ -86,8 +86,9 @@ TEST(ForceSpreading, AddsExactlyTheMarkersTotalForceToTheUniformOne)
         inner.lo[static_cast<std::size_t>(a)] += 1;
         inner.hi[static_cast<std::size_t>(a)] -= 1;
         const double uniform = a == 1 ? -1.0 : 0.0;
-        const double sum = sum_over(
-            inner, [&](const Index<2>& f) { return (force[a](f) - uniform) * grid.cell_volume(); });
+        const double sum = sum_over(grid.communicator(), inner, [&](const Index<2>& f) {
+            return (force[a](f) - uniform) * grid.cell_volume();
+        });
         EXPECT_NEAR(sum, rho * total[a], 1e-12 * rho * c.markers.size());
     }
 }
