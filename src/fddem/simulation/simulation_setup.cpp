@@ -82,7 +82,7 @@ Particles<Dim> make_particles(const CaseConfig& config, const MacGrid<Dim>& grid
         body.motion = b.motion == "fixed"        ? Motion::fixed
                       : b.motion == "prescribed" ? Motion::prescribed
                                                  : Motion::free;
-        body.centre = vector_of<Dim>(b.position);
+        body.centre = grid.domain().wrap(vector_of<Dim>(b.position)); // in the box
         if (body.motion != Motion::fixed) {
             body.velocity = vector_of<Dim>(b.velocity);
         }
