@@ -23,8 +23,10 @@ std::string Progress::clock_text(double seconds)
     return text;
 }
 
-void Progress::resume_from(long step, double time)
+void Progress::start(long step, double time)
 {
+    start_ = std::chrono::steady_clock::now();
+    last_draw_ = start_;
     first_step_ = step;
     first_time_ = time;
 }
