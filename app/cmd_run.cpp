@@ -4,7 +4,6 @@
 // file supplies what belongs to the program: the default run directory, the progress line on
 // the terminal, the signal handlers, and the exit status of each way a run ends.
 
-#include "fddem/core/errors.hpp"
 #include "fddem/io/case_reader.hpp"
 #include "fddem/run/run_case.hpp"
 
@@ -59,6 +58,7 @@ public:
     {
         progress_.update(step, time, outer_iterations);
     }
+    void loop_ended() override { progress_.finish(); }
     [[nodiscard]] int pending_interrupt() override { return app::pending_interrupt(); }
 
 private:

@@ -91,7 +91,14 @@ RunResult Driver<Dim>::step_to_end()
         failure =
             fmt::format("step {}, t = {:g} s, in {}: {}", e.step(), e.time(), e.where(), e.what());
     }
+    monitor_.loop_ended();
     record_.wall_seconds = wall_seconds();
+    return end_run(failure, signal);
+}
+
+template <int Dim>
+RunResult Driver<Dim>::end_run(const std::string& failure, int signal)
+{
     const Clock& clock = sim_.clock();
     if (!failure.empty()) {
         // The simulation is back at the end of the last good step (Simulation::advance): its

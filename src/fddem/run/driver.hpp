@@ -48,6 +48,9 @@ public:
 
 private:
     RunResult step_to_end();
+    /// Closes the outputs and says how the run ended: by a numerical `failure` (its text), by
+    /// the interrupt `signal`, or (neither) at the end of the case.
+    RunResult end_run(const std::string& failure, int signal);
     /// particles.csv rows and field frames due at the end of the step just taken.
     void write_scheduled_outputs();
     /// The outputs at the end of a run (completed or failed): the closing field frame, the line

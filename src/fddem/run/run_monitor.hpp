@@ -25,6 +25,8 @@ public:
     virtual void loop_started(long /*step*/, double /*time*/) {}
     /// After every step.
     virtual void step_done(long /*step*/, double /*time*/, int /*outer_iterations*/) {}
+    /// The time loop has ended (the closing outputs and the last message follow).
+    virtual void loop_ended() {}
     /// Asked after every step that does not end the run: a signal number (SIGINT, SIGTERM)
     /// stops the run after a checkpoint; 0 lets it go on.
     [[nodiscard]] virtual int pending_interrupt() { return 0; }
