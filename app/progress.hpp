@@ -27,6 +27,10 @@ public:
     [[nodiscard]] static std::string clock_text(double seconds);
 
 private:
+    /// "step N  t = … s (…%)  K outer  … steps/s  ETA h:mm:ss"
+    [[nodiscard]] std::string status_text(long step, double time, int outer_iterations,
+                                          std::chrono::steady_clock::time_point now) const;
+
     std::FILE* stream_;
     bool is_terminal_;
     long log_interval_;

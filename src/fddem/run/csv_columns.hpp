@@ -36,7 +36,7 @@ void visit_components(Visit& visit, std::string_view stem,
                       const std::array<std::string_view, 3>& names, const Vec<Dim>& value)
 {
     for (int axis = 0; axis < Dim; ++axis) {
-        visit(ColumnName{stem, names[static_cast<std::size_t>(axis)]}, value[axis]);
+        visit(ColumnName{stem, names.at(static_cast<std::size_t>(axis))}, value[axis]);
     }
 }
 

@@ -20,7 +20,7 @@ std::array<double, 3> padded(const Vec<Dim>& value)
 {
     std::array<double, 3> xyz{};
     for (int d = 0; d < Dim; ++d) {
-        xyz[static_cast<std::size_t>(d)] = value[d];
+        xyz.at(static_cast<std::size_t>(d)) = value[d];
     }
     return xyz;
 }

@@ -13,7 +13,7 @@ std::vector<std::string> sample_columns()
     std::vector<std::string> columns;
     for (const auto& names : {axis_names, velocity_names}) {
         for (int d = 0; d < Dim; ++d) {
-            columns.emplace_back(names[static_cast<std::size_t>(d)]);
+            columns.emplace_back(names.at(static_cast<std::size_t>(d)));
         }
     }
     columns.emplace_back("p");
