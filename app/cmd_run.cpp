@@ -1,17 +1,19 @@
 // SPDX-License-Identifier: MIT
-// `fddem run`: read and check the case, build the simulation, prepare the run directory (in that
-// order, so bad input writes nothing), then step to the end writing the outputs (app/run.cpp).
-// With --restart, the run directory's case and newest usable checkpoint (app/run_restart.cpp).
+// `fddem run`: read and check the case (bad input writes nothing), then run it with the
+// library's driver (fddem/run/run_case.hpp); with --restart, continue a run directory. This
+// file supplies what belongs to the program: the default run directory, the progress line on
+// the terminal, the signal handlers, and the exit status of each way a run ends.
 
-#include "fddem/core/errors.hpp"
 #include "fddem/io/case_reader.hpp"
-#include "fddem/io/checkpoint_files.hpp"
+#include "fddem/run/run_case.hpp"
 
 #include <filesystem>
-#include <system_error>
+#include <limits>
+#include <unistd.h>
 
 #include "commands.hpp"
-#include "run.hpp"
+#include "interrupt.hpp"
+#include "progress.hpp"
 
 namespace fddem::app {
 namespace {
@@ -34,33 +36,46 @@ fs::path default_run_directory(const RunOptions& options, const CaseConfig& conf
     return fs::path("runs") / stem;
 }
 
-int restart_command(const RunOptions& options)
+/// The run as the user sees it on stderr: a status line redrawn on a terminal (plain lines
+/// every output.log_interval steps otherwise, none with --quiet), messages on their own
+/// lines; SIGINT and SIGTERM stop the run after a checkpoint once its time loop has begun.
+class TerminalMonitor final : public RunMonitor {
+public:
+    TerminalMonitor(const RunOptions& options, const CaseConfig& config)
+        : progress_(stderr, !options.quiet && ::isatty(STDERR_FILENO) != 0,
+                    options.quiet ? std::numeric_limits<long>::max() : config.output.log_interval,
+                    config.time.end)
+    {
+    }
+
+    void message(const std::string& text) override { progress_.message(text); }
+    void loop_started(long step, double time) override
+    {
+        install_interrupt_handlers();
+        progress_.start(step, time);
+    }
+    void step_done(long step, double time, int outer_iterations) override
+    {
+        progress_.update(step, time, outer_iterations);
+    }
+    void loop_ended() override { progress_.finish(); }
+    [[nodiscard]] int pending_interrupt() override { return app::pending_interrupt(); }
+
+private:
+    Progress progress_;
+};
+
+int exit_status(const RunResult& result)
 {
-    const fs::path directory = options.restart_directory;
-    std::error_code error;
-    if (!fs::is_directory(directory, error)) {
-        throw InputError(directory.string(), 0, "",
-                         fs::exists(directory, error) ? "cannot restart: not a run directory"
-                                                      : "cannot restart: no such run directory");
+    switch (result.outcome) {
+    case RunResult::Outcome::completed:
+        return exit_success;
+    case RunResult::Outcome::numerical_failure:
+        return exit_numerical_failure;
+    case RunResult::Outcome::interrupted:
+        return exit_interrupted_base + result.signal;
     }
-    const fs::path case_file = directory / "case.toml";
-    if (!fs::exists(case_file, error)) {
-        throw InputError(case_file.string(), 0, "",
-                         "cannot restart: missing (not an fddem run directory?)");
-    }
-    const CaseConfig config = read_case(case_file.string(), options.overrides);
-    if (list_checkpoints(directory).empty()) {
-        throw InputError(checkpoint_directory(directory).string(), 0, "",
-                         "cannot restart: no checkpoint (a run writes one every "
-                         "checkpoint.step_interval steps, at its end and when interrupted)");
-    }
-    const bool has_overrides = !options.overrides.empty();
-    if (config.domain.dimension == 2) {
-        Run<2> run(config, directory, options);
-        return run.resume(has_overrides);
-    }
-    Run<3> run(config, directory, options);
-    return run.resume(has_overrides);
+    return exit_internal_error;
 }
 
 } // namespace
@@ -68,16 +83,15 @@ int restart_command(const RunOptions& options)
 int run_command(const RunOptions& options)
 {
     if (!options.restart_directory.empty()) {
-        return restart_command(options);
+        const fs::path directory = options.restart_directory;
+        const CaseConfig config = read_restart_case(directory, options.overrides);
+        TerminalMonitor monitor(options, config);
+        return exit_status(restart_run(config, directory, monitor, !options.overrides.empty()));
     }
     const CaseConfig config = read_case(options.case_file, options.overrides);
-    const fs::path directory = default_run_directory(options, config);
-    if (config.domain.dimension == 2) {
-        Run<2> run(config, directory, options);
-        return run.start(options.force);
-    }
-    Run<3> run(config, directory, options);
-    return run.start(options.force);
+    TerminalMonitor monitor(options, config);
+    return exit_status(
+        run_case(config, default_run_directory(options, config), monitor, options.force));
 }
 
 } // namespace fddem::app

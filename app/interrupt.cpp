@@ -35,16 +35,4 @@ int pending_interrupt() noexcept
     return received_signal;
 }
 
-const char* signal_name(int signal) noexcept
-{
-    switch (signal) {
-    case SIGINT:
-        return "SIGINT";
-    case SIGTERM:
-        return "SIGTERM";
-    default:
-        return "a signal";
-    }
-}
-
 } // namespace fddem::app

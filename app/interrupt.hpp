@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // SIGINT and SIGTERM end a run cleanly: the handler only records the signal; the time loop
-// finishes its step, writes a checkpoint and returns exit_interrupted_base + the signal.
+// finishes its step, writes a checkpoint and ends (exit status exit_interrupted_base + the
+// signal). The library's driver asks for the signal through the program's RunMonitor.
 
 namespace fddem::app {
 
@@ -11,8 +12,5 @@ void install_interrupt_handlers();
 
 /// The signal received (SIGINT or SIGTERM), 0 if none.
 [[nodiscard]] int pending_interrupt() noexcept;
-
-/// "SIGINT", "SIGTERM" or "signal N".
-[[nodiscard]] const char* signal_name(int signal) noexcept;
 
 } // namespace fddem::app

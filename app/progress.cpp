@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "progress.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 
 namespace fddem::app {
@@ -18,45 +20,48 @@ std::string Progress::clock_text(double seconds)
         return "-";
     }
     const long s = std::lround(seconds);
-    char text[32];
-    std::snprintf(text, sizeof text, "%ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
-    return text;
+    return fmt::format("{}:{:02}:{:02}", s / 3600, (s / 60) % 60, s % 60);
 }
 
-void Progress::resume_from(long step, double time)
+void Progress::start(long step, double time)
 {
+    start_ = std::chrono::steady_clock::now();
+    last_draw_ = start_;
     first_step_ = step;
     first_time_ = time;
 }
 
-void Progress::update(long step, double time, int outer_iterations)
+std::string Progress::status_text(long step, double time, int outer_iterations,
+                                  std::chrono::steady_clock::time_point now) const
 {
-    const auto now = std::chrono::steady_clock::now();
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     const double rate = elapsed > 0.0 ? static_cast<double>(step - first_step_) / elapsed : 0.0;
     std::string eta = "-";
     std::string percent;
     if (end_time_ && time > first_time_) {
         eta = clock_text(elapsed * (*end_time_ - time) / (time - first_time_));
-        char p[16];
-        std::snprintf(p, sizeof p, " (%5.1f %%)", 100.0 * time / *end_time_);
-        percent = p;
+        percent = fmt::format(" ({:5.1f} %)", 100.0 * time / *end_time_);
     }
+    return fmt::format("step {}  t = {:.6g} s{}  {} outer  {:.1f} steps/s  ETA {}", step, time,
+                       percent, outer_iterations, rate, eta);
+}
+
+void Progress::update(long step, double time, int outer_iterations)
+{
+    const auto now = std::chrono::steady_clock::now();
     if (is_terminal_) {
         // Redraw at most four times a second.
         if (std::chrono::duration<double>(now - last_draw_).count() < 0.25) {
             return;
         }
         last_draw_ = now;
-        std::fprintf(stream_, "\rstep %ld  t = %.6g s%s  %d outer  %.1f steps/s  ETA %s   ", step,
-                     time, percent.c_str(), outer_iterations, rate, eta.c_str());
+        fmt::print(stream_, "\r{}   ", status_text(step, time, outer_iterations, now));
         std::fflush(stream_);
         has_line_ = true;
         return;
     }
     if (step % log_interval_ == 0) {
-        std::fprintf(stream_, "step %ld  t = %.6g s%s  %d outer  %.1f steps/s  ETA %s\n", step,
-                     time, percent.c_str(), outer_iterations, rate, eta.c_str());
+        fmt::print(stream_, "{}\n", status_text(step, time, outer_iterations, now));
         std::fflush(stream_);
     }
 }
@@ -72,7 +77,7 @@ void Progress::finish()
 void Progress::message(const std::string& text)
 {
     finish();
-    std::fprintf(stream_, "%s\n", text.c_str());
+    fmt::print(stream_, "{}\n", text);
     std::fflush(stream_);
 }
 

@@ -13,8 +13,9 @@ class Progress {
 public:
     Progress(std::FILE* stream, bool is_terminal, long log_interval,
              std::optional<double> end_time);
-    /// Counts rate and ETA from this step and time (a restarted run), not from 0.
-    void resume_from(long step, double time);
+    /// The time loop starts now, at this step and time (a restarted run's are not 0): rate and
+    /// ETA count from here.
+    void start(long step, double time);
     /// Called after every step.
     void update(long step, double time, int outer_iterations);
     /// Ends the status line (terminal) before other messages are printed.
@@ -26,6 +27,10 @@ public:
     [[nodiscard]] static std::string clock_text(double seconds);
 
 private:
+    /// "step N  t = … s (…%)  K outer  … steps/s  ETA h:mm:ss"
+    [[nodiscard]] std::string status_text(long step, double time, int outer_iterations,
+                                          std::chrono::steady_clock::time_point now) const;
+
     std::FILE* stream_;
     bool is_terminal_;
     long log_interval_;

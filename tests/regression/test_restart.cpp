@@ -90,6 +90,7 @@ constexpr int checkpoint_interval = 5;
 using Result = fddem::test::ProgramResult;
 using fddem::test::file_contents;
 using fddem::test::lines_of;
+using fddem::test::solver_rows_without_wall_time;
 
 /// Every file under `root` (relative path → contents).
 std::map<std::string, std::string> snapshot(const fs::path& root)
@@ -195,16 +196,6 @@ protected:
     fs::path case_file_;
     fs::path log_;
 };
-
-/// solver.csv without the wall_seconds column (the last), which no two runs share.
-std::vector<std::string> solver_rows_without_wall_time(const fs::path& run)
-{
-    std::vector<std::string> rows = lines_of(file_contents(run / "solver.csv"));
-    for (std::string& row : rows) {
-        row = row.substr(0, row.rfind(','));
-    }
-    return rows;
-}
 
 /// The continued run's outputs are the uninterrupted run's, byte for byte.
 void expect_same_outputs(const fs::path& reference, const fs::path& continued)

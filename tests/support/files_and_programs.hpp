@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-/// Helpers for tests that look at files and run the fddem program: a file read whole, a fresh
-/// scratch directory per test, and `fddem …` run through the shell with its output captured.
+/// Helpers for tests that look at files and run the fddem program: a file read whole, solver.csv
+/// without its wall time, a fresh scratch directory per test, and `fddem …` run through the shell
+/// with its output captured.
 
 #include <gtest/gtest.h>
 
@@ -34,6 +35,17 @@ inline std::vector<std::string> lines_of(const std::string& text)
         lines.push_back(line);
     }
     return lines;
+}
+
+/// The rows of RUN/solver.csv without their wall_seconds column (the last one, which no two
+/// runs share): what must be equal for two runs to be the same.
+inline std::vector<std::string> solver_rows_without_wall_time(const std::filesystem::path& run)
+{
+    std::vector<std::string> rows = lines_of(file_contents(run / "solver.csv"));
+    for (std::string& row : rows) {
+        row = row.substr(0, row.rfind(','));
+    }
+    return rows;
 }
 
 /// An empty directory under the system's temporary directory, named after `prefix`, the

@@ -77,19 +77,20 @@ Errors solve_on(int n)
     const double volume = grid.cell_volume();
     double error_u = 0.0;
     for (int a = 0; a < 2; ++a) {
-        error_u += sum_over(grid.face_box(a), [&](const Index<2>& c) {
+        error_u += sum_over(grid.communicator(), grid.owned_faces(a), [&](const Index<2>& c) {
             const Vec<2> x = grid.face_centre(a, c);
             const double exact = a == 0 ? Exact::u(x[0], x[1]) : Exact::v(x[0], x[1]);
             return std::pow(sim.fluid().u[a](c) - exact, 2) * volume;
         });
     }
-    const double mean_p =
-        sum_over(grid.cell_box(), [&](const Index<2>& c) { return sim.fluid().p(c); }) /
-        static_cast<double>(grid.n_cells());
-    const double error_p = sum_over(grid.cell_box(), [&](const Index<2>& c) {
-        const Vec<2> x = grid.cell_centre(c);
-        return std::pow(sim.fluid().p(c) - mean_p - Exact::p(x[0], x[1]), 2) * volume;
-    });
+    const double mean_p = sum_over(grid.communicator(), grid.owned_cells(),
+                                   [&](const Index<2>& c) { return sim.fluid().p(c); }) /
+                          static_cast<double>(grid.n_cells());
+    const double error_p =
+        sum_over(grid.communicator(), grid.owned_cells(), [&](const Index<2>& c) {
+            const Vec<2> x = grid.cell_centre(c);
+            return std::pow(sim.fluid().p(c) - mean_p - Exact::p(x[0], x[1]), 2) * volume;
+        });
     CellField<2> divergence(grid);
     double max_div = 0.0;
     for_each_index(grid.cell_box(), [&](const Index<2>& c) {

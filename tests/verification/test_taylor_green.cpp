@@ -21,7 +21,7 @@ double kinetic_energy(const Simulation<2>& sim)
     const auto& grid = sim.grid();
     double e = 0.0;
     for (int a = 0; a < 2; ++a) {
-        e += sum_over(grid.cell_box(), [&](const Index<2>& c) {
+        e += sum_over(grid.communicator(), grid.owned_cells(), [&](const Index<2>& c) {
             return 0.5 * std::pow(sim.fluid().u[a](c), 2) * grid.cell_volume();
         });
     }

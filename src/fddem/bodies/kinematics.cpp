@@ -21,7 +21,17 @@ void move_bodies(std::span<Particle<Dim>> bodies, double dt, bool is_paper_conta
     }
 }
 
+template <int Dim>
+void wrap_centres(std::span<Particle<Dim>> bodies, const PeriodicDomain<Dim>& domain)
+{
+    for (Particle<Dim>& body : bodies) {
+        body.centre = domain.wrap(body.centre);
+    }
+}
+
 template void move_bodies<2>(std::span<Particle<2>>, double, bool);
 template void move_bodies<3>(std::span<Particle<3>>, double, bool);
+template void wrap_centres<2>(std::span<Particle<2>>, const PeriodicDomain<2>&);
+template void wrap_centres<3>(std::span<Particle<3>>, const PeriodicDomain<3>&);
 
 } // namespace fddem

@@ -4,6 +4,7 @@
 /// orientation θ with ω (2D; a sphere's markers need no orientation).
 
 #include "fddem/bodies/particle.hpp"
+#include "fddem/core/periodic_domain.hpp"
 
 #include <span>
 
@@ -15,5 +16,10 @@ namespace fddem {
 /// position"). Fixed bodies stay.
 template <int Dim>
 void move_bodies(std::span<Particle<Dim>> bodies, double dt, bool is_paper_contact);
+
+/// A body whose centre crossed a periodic side of `domain` re-enters on the other: its centre
+/// moves by whole periods into the box (unchanged bit for bit if it is inside).
+template <int Dim>
+void wrap_centres(std::span<Particle<Dim>> bodies, const PeriodicDomain<Dim>& domain);
 
 } // namespace fddem

@@ -16,6 +16,7 @@
 /// A wall is a body of infinite mass that does not turn and may slide along itself (a lid);
 /// its normal points from the ball into the wall.
 
+#include "fddem/core/periodic_domain.hpp"
 #include "fddem/core/vec.hpp"
 
 #include <cmath>
@@ -51,13 +52,15 @@ void set_relative_velocity(ContactGeometry<Dim>& g, const Vec<Dim>& v)
     g.slip_velocity = v - normal_velocity * g.normal;
 }
 
-/// Contact between balls a and b (a ≠ b in position; coincident centres get the normal +x).
+/// Contact between balls a and b whose centres are `separation` = x_b − x_a apart: across a
+/// periodic boundary, the nearest image's (PeriodicDomain::minimum_image); the normal and the
+/// lever arms follow from it, the centres themselves are not read.
 template <int Dim>
-[[nodiscard]] ContactGeometry<Dim> ball_ball_contact(const BallState<Dim>& a,
-                                                     const BallState<Dim>& b)
+[[nodiscard]] ContactGeometry<Dim>
+ball_ball_contact(const BallState<Dim>& a, const BallState<Dim>& b, const Vec<Dim>& separation)
 {
     ContactGeometry<Dim> g;
-    const Vec<Dim> d = b.centre - a.centre;
+    const Vec<Dim>& d = separation;
     const double distance = d.norm();
     g.normal = distance > 0.0 ? Vec<Dim>(d / distance) : Vec<Dim>(Vec<Dim>::Unit(0));
     g.overlap = a.radius + b.radius - distance;
@@ -67,6 +70,23 @@ template <int Dim>
                                       (a.velocity + cross(a.omega, g.lever_first)));
     g.rolling_omega = a.omega - b.omega;
     return g;
+}
+
+/// Contact between balls a and b (a ≠ b in position; coincident centres get the normal +x).
+template <int Dim>
+[[nodiscard]] ContactGeometry<Dim> ball_ball_contact(const BallState<Dim>& a,
+                                                     const BallState<Dim>& b)
+{
+    return ball_ball_contact(a, b, Vec<Dim>(b.centre - a.centre));
+}
+
+/// Contact between balls a and b in a box with periodic axes: between their nearest images.
+template <int Dim>
+[[nodiscard]] ContactGeometry<Dim> ball_ball_contact(const BallState<Dim>& a,
+                                                     const BallState<Dim>& b,
+                                                     const PeriodicDomain<Dim>& domain)
+{
+    return ball_ball_contact(a, b, domain.minimum_image(b.centre - a.centre));
 }
 
 /// Contact between ball a and the plane wall x_axis = position, the box lying on the side

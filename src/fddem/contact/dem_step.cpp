@@ -33,7 +33,7 @@ public:
                   const Model& model, ContactHistory<Dim>& history, double margin,
                   const CellList<Dim>& cells)
         : force(bodies.size()), torque(bodies.size()), has_contact(bodies.size()), walls_(walls),
-          model_(model), history_(history), margin_(margin),
+          model_(model), history_(history), margin_(margin), domain_(cells.domain()),
           neighbours_(margin, largest_radius(bodies), cells)
     {
         neighbours_.set_walls(walls.origin, walls.length, walls.has_walls);
@@ -67,7 +67,7 @@ public:
                 continue; // neither can move: nothing to resolve
             }
             const ContactGeometry<Dim> g =
-                ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]));
+                ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]), domain_);
             if (g.overlap <= 0.0) {
                 mark_if_near(g.overlap, a, b);
                 continue;
@@ -156,6 +156,7 @@ private:
     const Model& model_;
     ContactHistory<Dim>& history_;
     double margin_;                ///< DemSettings::margin [m]
+    PeriodicDomain<Dim> domain_;   ///< the cell list's: pairs across periodic sides
     ContactHistory<Dim> previous_; ///< the springs before this evaluation
     double step_ = 0.0;            ///< Δt_i [s]
     double stretch_ = 0.0;         ///< time over which the springs stretch now [s]

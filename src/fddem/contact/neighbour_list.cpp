@@ -7,7 +7,8 @@ namespace fddem {
 
 template <int Dim>
 NeighbourList<Dim>::NeighbourList(double margin, double largest_radius, const CellList<Dim>& cells)
-    : margin_(margin), skin_(std::max(0.0, cells.range() - 2.0 * largest_radius - margin))
+    : margin_(margin), skin_(std::max(0.0, cells.range() - 2.0 * largest_radius - margin)),
+      domain_(cells.domain())
 {
 }
 
@@ -28,7 +29,7 @@ bool NeighbourList<Dim>::refresh(std::span<const Vec<Dim>> centres, std::span<co
     bool is_stale = anchors_.size() != centres.size() || anchors_.empty() || skin_ <= 0.0;
     const double limit_squared = 0.25 * skin_ * skin_;
     for (std::size_t b = 0; !is_stale && b < centres.size(); ++b) {
-        is_stale = (centres[b] - anchors_[b]).squaredNorm() > limit_squared;
+        is_stale = domain_.minimum_image(centres[b] - anchors_[b]).squaredNorm() > limit_squared;
     }
     if (is_stale) {
         build(centres, radii, cells);
@@ -48,7 +49,8 @@ void NeighbourList<Dim>::build(std::span<const Vec<Dim>> centres, std::span<cons
     for (const auto& [i, j] : found_) {
         const auto a = static_cast<std::size_t>(i);
         const auto b = static_cast<std::size_t>(j);
-        const double gap = (centres[a] - centres[b]).norm() - radii[a] - radii[b];
+        const double gap =
+            domain_.minimum_image(centres[a] - centres[b]).norm() - radii[a] - radii[b];
         if (gap < reach) {
             pairs_.emplace_back(i, j);
         }

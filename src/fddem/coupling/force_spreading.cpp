@@ -2,6 +2,7 @@
 #include "fddem/coupling/force_spreading.hpp"
 
 #include "fddem/coupling/transfer.hpp"
+#include "fddem/grid/halo_exchange.hpp"
 
 namespace fddem {
 
@@ -13,6 +14,10 @@ void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<D
     for (int a = 0; a < Dim; ++a) {
         body_force[a].fill(uniform_force[a]);
     }
+    // What markers by a periodic side spread into the ghosts beyond it belongs to the faces
+    // there on the other side: collected in zeroed ghosts, then added to their owners.
+    const HaloExchange<Dim> halo(grid);
+    halo.zero_ghosts(body_force);
     std::visit(
         [&](auto k) {
             for (const Particle<Dim>& body : bodies) {
@@ -25,6 +30,8 @@ void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<D
             }
         },
         kernel);
+    halo.accumulate(body_force);
+    halo.fill(body_force);
 }
 
 template void spread_marker_forces<2>(std::span<const Particle<2>>, const MacGrid<2>&,

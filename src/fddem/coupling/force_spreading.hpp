@@ -11,7 +11,9 @@
 
 namespace fddem {
 
-/// Sets `body_force` [N/m³] to `uniform_force` plus ρf D(λ) of every body's markers.
+/// Sets `body_force` [N/m³] to `uniform_force` plus ρf D(λ) of every body's markers, with
+/// what was spread across a periodic side accumulated on the faces there (HaloExchange) and
+/// the periodic ghosts filled.
 template <int Dim>
 void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<Dim>& grid,
                           const AnyKernel& kernel, double fluid_density,

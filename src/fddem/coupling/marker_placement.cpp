@@ -34,9 +34,12 @@ void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time
                              "the body's motion is not finite: the coupling has blown up");
     }
     MarkerCoupling<Dim>& c = body.coupling;
+    const PeriodicDomain<Dim> domain = grid.domain();
     for (std::size_t l = 0; l < c.markers.size(); ++l) {
         c.offsets[l] = to_world<Dim>(c.markers.offsets[l], body.angle);
-        c.positions[l] = body.centre + c.offsets[l];
+        // Each marker on its own image in the box: a body across a periodic side has markers
+        // on both sides, and every marker's kernel support stays within the ghost layers.
+        c.positions[l] = domain.wrap(body.centre + c.offsets[l]);
         if (!fits_in_storage<Dim, Kernel>(grid, c.positions[l])) {
             throw NumericalError(step, time, who,
                                  fmt::format("a marker of the body left the box (its kernel "

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// Where the markers are (paper §2.2, Fig. 1): each body's markers, laid out in its own frame,
-/// turned by its orientation and carried to its centre.
+/// turned by its orientation and carried to its centre; across a periodic side of the box, to
+/// the image inside it (PeriodicDomain::wrap), marker by marker.
 
 #include "fddem/bodies/particle.hpp"
 #include "fddem/coupling/delta_kernel.hpp"
@@ -11,7 +12,8 @@
 
 namespace fddem {
 
-/// Sets every body's world-frame offsets r_l and positions X_l = centre + r_l. Throws
+/// Sets every body's world-frame offsets r_l and positions X_l = centre + r_l, wrapped into the
+/// box along periodic axes (unchanged bit for bit where no wrap is needed). Throws
 /// NumericalError (of time step `step`, ending at `time` [s]) if a body's motion is not finite or
 /// a marker's kernel support leaves the grid's storage.
 template <int Dim>

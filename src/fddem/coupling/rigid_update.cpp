@@ -3,6 +3,7 @@
 
 #include "fddem/coupling/rigid_coupling.hpp"
 #include "fddem/coupling/transfer.hpp"
+#include "fddem/grid/halo_exchange.hpp"
 
 #include <algorithm>
 
@@ -51,11 +52,17 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
                                                    c.lambda); // eq. (15)
     c.forcing_change = forcing_change<Dim>(c.offsets, c.markers.volumes, c.lambda, c.lambda_star,
                                            s.dt, body.volume(), body.radius());
+    // eq. (16): u ← u + Δt D(λ − λ*). Across a periodic side the ghosts collect what belongs
+    // to the faces on the other side (zeroed first, then accumulated onto their owners) and are
+    // filled again, so that the next body's I(u) reads this body's correction there as well.
+    const HaloExchange<Dim> halo(grid);
+    halo.zero_ghosts(u);
     for (std::size_t l = 0; l < c.markers.size(); ++l) {
-        // eq. (16): u ← u + Δt D(λ − λ*)
         spread_vector<Dim, Kernel>(grid, u, c.positions[l], s.dt * (c.lambda[l] - c.lambda_star[l]),
                                    c.markers.volumes[l]);
     }
+    halo.accumulate(u);
+    halo.fill(u);
     c.lambda_star = c.lambda; // λ* ← λ
     body.velocity = motion.velocity;
     body.omega = motion.omega;

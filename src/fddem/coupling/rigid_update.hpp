@@ -25,7 +25,9 @@ struct RigidUpdateSettings {
 
 /// Eqs. (13)–(16) for every body, in the order of the store; `u` needs its ghosts filled.
 /// Sets each body's velocity and ω, its λ (= λ*) and coupling.forcing_change, and adds the
-/// correction to `u`. Returns the largest rigid-motion defect max |U + ω×r − I(u)| [m/s].
+/// correction to `u` (accumulated across periodic sides, whose ghosts are then filled; those
+/// across walls are left as they were). Returns the largest rigid-motion defect
+/// max |U + ω×r − I(u)| [m/s].
 template <int Dim>
 double update_rigid_bodies(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
                            const AnyKernel& kernel, const RigidUpdateSettings<Dim>& settings,

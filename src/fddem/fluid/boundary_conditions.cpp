@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/fluid/boundary_conditions.hpp"
 
+#include "fddem/core/errors.hpp"
+#include "fddem/grid/halo_exchange.hpp"
 #include "fddem/grid/loops.hpp"
 
 #include <array>
@@ -18,19 +20,14 @@ Box<Dim> slab(const MacGrid<Dim>& grid, int axis, int lo, int hi)
     return box;
 }
 
-/// Periodic images along `axis`: every index outside [0, n) takes the value at index mod n.
+/// The grid and the boundary conditions must agree on the periodic axes: the grid's halo
+/// exchange fills the ghosts across them, the boundary conditions those across every other side.
 template <int Dim>
-void wrap_periodic(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a)
+void check_periodic_axes(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc)
 {
-    const int n = grid.cells(axis);
-    const Box<Dim> storage = grid.storage_box();
-    const auto ax = static_cast<std::size_t>(axis);
-    const auto copy = [&](const Index<Dim>& i) {
-        const int m = ((i[ax] % n) + n) % n;
-        a(i) = a(with_axis(i, axis, m));
-    };
-    for_each_index(slab(grid, axis, storage.lo[ax], 0), copy);
-    for_each_index(slab(grid, axis, n, storage.hi[ax]), copy);
+    if (grid.periodic_axes() != bc.is_periodic) {
+        throw InternalError("the grid and the boundary conditions disagree on the periodic axes");
+    }
 }
 
 /// The boundary faces of `axis` on `side`: the face slab at index 0 or n, transverse extent
@@ -134,13 +131,17 @@ template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                           FaceField<Dim>& u)
 {
+    check_periodic_axes(grid, bc);
+    // Periodic images first, then the walled sides over the whole storage extent of the other
+    // axes (the values are those of filling axis by axis in any order: a wall's ghosts depend
+    // only on their own row, which a periodic image repeats).
+    HaloExchange<Dim>(grid).fill(u);
     for (int d = 0; d < Dim; ++d) {
+        if (bc.periodic(d)) {
+            continue;
+        }
         for (int a = 0; a < Dim; ++a) {
             GridArray<Dim>& ua = u[a];
-            if (bc.periodic(d)) {
-                wrap_periodic(grid, d, ua);
-                continue;
-            }
             for (int side = 0; side < 2; ++side) {
                 if (a == d) {
                     fill_normal_side(grid, bc, d, side, ua);
@@ -169,7 +170,7 @@ std::array<double, 2> boundary_fluxes(const MacGrid<Dim>& grid, const BoundaryCo
             }
             const double outward = side == 0 ? -1.0 : 1.0;
             const double out = outward * area *
-                               sum_over(boundary_faces(grid, d, side),
+                               sum_over(grid.communicator(), boundary_faces(grid, d, side),
                                         [&](const Index<Dim>& i) { return u[d](i); });
             if (kind == BoundaryKind::inflow) {
                 flux[0] -= out;
@@ -226,12 +227,13 @@ template <int Dim>
 void fill_cell_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                       CellField<Dim>& phi)
 {
+    check_periodic_axes(grid, bc);
+    HaloExchange<Dim>(grid).fill(phi);
     const Box<Dim> storage = grid.storage_box();
     for (int d = 0; d < Dim; ++d) {
         const auto ax = static_cast<std::size_t>(d);
         const int n = grid.cells(d);
         if (bc.periodic(d)) {
-            wrap_periodic(grid, d, phi);
             continue;
         }
         for_each_index(slab(grid, d, storage.lo[ax], 0),
@@ -242,21 +244,6 @@ void fill_cell_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
     }
 }
 
-template <int Dim>
-void fill_periodic_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                          GridArray<Dim>& a)
-{
-    for (int d = 0; d < Dim; ++d) {
-        if (bc.periodic(d)) {
-            wrap_periodic(grid, d, a);
-        }
-    }
-}
-
-template void fill_periodic_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
-                                      GridArray<2>&);
-template void fill_periodic_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
-                                      GridArray<3>&);
 template void fill_velocity_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
                                       FaceField<2>&);
 template void fill_velocity_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&,

@@ -17,6 +17,7 @@
 #include "fddem/grid/fields.hpp"
 #include "fddem/grid/mac_grid.hpp"
 
+#include <algorithm>
 #include <array>
 
 namespace fddem {
@@ -83,28 +84,31 @@ struct BoundaryConditions {
     }
 };
 
-/// The faces of component `axis` that are unknowns of the momentum equations: all faces
+/// The faces of component `axis` that are unknowns of the momentum equations: the owned faces
 /// except those lying on the boundary (wall: the wall's normal velocity, zero; inflow: the
-/// profile; outflow: set_outflow_velocity). On a periodic axis face n is the image of face 0
-/// and is a ghost.
+/// profile; outflow: set_outflow_velocity). On a periodic axis every owned face is an unknown
+/// (face n is the image of face 0, a ghost). `bc` must agree with the grid on periodic axes.
 template <int Dim>
-[[nodiscard]] Box<Dim> unknown_faces(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+[[nodiscard]] Box<Dim> unknown_faces(const MacGrid<Dim>& grid,
+                                     [[maybe_unused]] const BoundaryConditions<Dim>& bc,
                                      int axis) noexcept
 {
-    Box<Dim> box = grid.cell_box();
-    if (!bc.periodic(axis)) {
-        box.lo[static_cast<std::size_t>(axis)] = 1;
+    Box<Dim> box = grid.owned_faces(axis);
+    if (!grid.is_periodic(axis)) {
+        const auto ax = static_cast<std::size_t>(axis);
+        box.lo[ax] = std::max(box.lo[ax], 1);
+        box.hi[ax] = std::min(box.hi[ax], grid.cells(axis));
     }
     return box;
 }
 
 /// Sets the normal velocity on wall and inflow faces and fills every ghost layer of `u`:
-/// periodic images across periodic axes; across a wall or an inflow, tangential ghosts such
-/// that the quadratic through the wall value and the first two interior values is continued
-/// (u_g = (8 u_w − 6 u_0 + u_1)/3), which makes the wall treatment exact for quadratic
-/// profiles (Poiseuille); outer ghost layers mirror the interior (odd about the wall). Across
-/// an outflow every ghost repeats the last interior value (zero gradient), and the outflow
-/// faces themselves are left as set_outflow_velocity() set them.
+/// periodic images across periodic axes (the grid's HaloExchange::fill); across a wall or an
+/// inflow, tangential ghosts such that the quadratic through the wall value and the first two
+/// interior values is continued (u_g = (8 u_w − 6 u_0 + u_1)/3), which makes the wall treatment
+/// exact for quadratic profiles (Poiseuille); outer ghost layers mirror the interior (odd about the
+/// wall). Across an outflow every ghost repeats the last interior value (zero gradient), and the
+/// outflow faces themselves are left as set_outflow_velocity() set them.
 template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                           FaceField<Dim>& u);
@@ -130,11 +134,6 @@ template <int Dim>
 [[nodiscard]] std::array<double, 2> boundary_fluxes(const MacGrid<Dim>& grid,
                                                     const BoundaryConditions<Dim>& bc,
                                                     const FaceField<Dim>& u);
-
-/// Fills only the periodic images of one array (cell field or one velocity component).
-template <int Dim>
-void fill_periodic_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                          GridArray<Dim>& a);
 
 /// Fills the ghost layers of a cell field: periodic images, or a zero normal gradient at
 /// walls, inflows and outflows (the pressure-correction condition wherever the normal velocity

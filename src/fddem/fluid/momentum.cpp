@@ -17,6 +17,7 @@
 
 #include "fddem/fluid/momentum.hpp"
 
+#include "fddem/grid/halo_exchange.hpp"
 #include "fddem/grid/loops.hpp"
 
 #include <algorithm>
@@ -175,7 +176,7 @@ double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
         return std::abs(residual) / a_p;
     };
 
-    return max_over_rows(box, [&](const Index<Dim>& row) {
+    return max_over_rows(grid.communicator(), box, [&](const Index<Dim>& row) {
         const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
         const int lo = box.lo[0];
         const int hi = box.hi[0];
@@ -311,8 +312,8 @@ ScaledSystem<Dim> scale_system(const MacGrid<Dim>& grid, const Box<Dim>& box, in
 /// with a non-zero coefficient (wall neighbours are folded into the coefficients), so they are
 /// the only ghosts refilled between the colours.
 template <int Dim>
-void red_black_sweep(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                     const Box<Dim>& box, const ScaledSystem<Dim>& scaled, GridArray<Dim>& u)
+void red_black_sweep(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Dim>& scaled,
+                     GridArray<Dim>& u)
 {
     double* ua = u.data();
     for (int colour = 0; colour < 2; ++colour) {
@@ -328,7 +329,7 @@ void red_black_sweep(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc
                 ua[o] = scaled.relaxed(ua, o);
             }
         });
-        fill_periodic_ghosts(grid, bc, u);
+        HaloExchange<Dim>(grid).fill(u);
     }
 }
 
@@ -421,7 +422,7 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
 
     if (settings.cycles == 0) {
         for (int k = 0; k < settings.sweeps; ++k) {
-            red_black_sweep(grid, bc, box, scaled, u);
+            red_black_sweep(grid, box, scaled, u);
         }
         fill_velocity_ghosts(grid, bc, state.u);
         return;
@@ -435,17 +436,17 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     const int post_sweeps = settings.sweeps - pre_sweeps;
     for (int cycle = 0; cycle < settings.cycles; ++cycle) {
         for (int k = 0; k < pre_sweeps; ++k) {
-            red_black_sweep(grid, bc, box, scaled, u);
+            red_black_sweep(grid, box, scaled, u);
         }
         if (!system.coarse_levels.empty()) {
             CoarseLevel<Dim>& coarse = system.coarse_levels.front();
             restrict_residual(fine, scaled, system.a_p.data(), alpha, u.data(), coarse);
             coarse_v_cycle(system.coarse_levels, 0, 2);
             add_coarse_correction(box, fine, coarse, u.data());
-            fill_periodic_ghosts(grid, bc, u);
+            HaloExchange<Dim>(grid).fill(u);
         }
         for (int k = 0; k < post_sweeps; ++k) {
-            red_black_sweep(grid, bc, box, scaled, u);
+            red_black_sweep(grid, box, scaled, u);
         }
     }
     fill_velocity_ghosts(grid, bc, state.u);

@@ -11,7 +11,7 @@ template <int Dim>
 double compute_divergence(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
                           CellField<Dim>& divergence)
 {
-    return max_over(grid.owned_cells(), [&](const Index<Dim>& c) {
+    return max_over(grid.communicator(), grid.owned_cells(), [&](const Index<Dim>& c) {
         const std::ptrdiff_t o = grid.offset(c);
         double div = 0.0;
         for (int d = 0; d < Dim; ++d) {

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// Loops over boxes of indices: the only place with OpenMP pragmas for field loops
-/// (STYLE.md §13). Every loop runs over a box the caller passes (the owned part of the grid).
+/// (STYLE.md §13). Every loop runs over a box the caller passes (the owned part of the grid),
+/// and every reduction over the grid ends in the Communicator the caller passes (one process:
+/// the identity; several: an MPI_Allreduce of the per-process results).
 
 #include "fddem/core/index.hpp"
+#include "fddem/grid/communicator.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -85,9 +88,9 @@ void for_each_cell_in_vtk_order(const Box<Dim>& box, F&& f)
     return std::isnan(b) ? std::numeric_limits<double>::infinity() : std::max(a, b);
 }
 
-/// Max over `box` of g(index) (g ≥ 0); the one reduction that becomes an MPI_Allreduce.
+/// Max over `box` (owned entries) of g(index) (g ≥ 0), over all processes of `comm`.
 template <int Dim, class G>
-[[nodiscard]] double max_over(const Box<Dim>& box, G&& g)
+[[nodiscard]] double max_over(const Communicator& comm, const Box<Dim>& box, G&& g)
 {
     double result = 0.0;
     [[maybe_unused]] const bool is_threaded = box.size() >= min_points_for_threads;
@@ -108,12 +111,13 @@ template <int Dim, class G>
             }
         }
     }
-    return result;
+    return comm.max(result);
 }
 
-/// Max over the rows of `box` (along axis 0) of g(row_start) (g ≥ 0), rows in parallel.
+/// Max over the rows of `box` (along axis 0) of g(row_start) (g ≥ 0), rows in parallel, over
+/// all processes of `comm`.
 template <int Dim, class G>
-[[nodiscard]] double max_over_rows(const Box<Dim>& box, G&& g)
+[[nodiscard]] double max_over_rows(const Communicator& comm, const Box<Dim>& box, G&& g)
 {
     Box<Dim> rows = box;
     rows.hi[0] = rows.lo[0] + 1;
@@ -132,13 +136,14 @@ template <int Dim, class G>
             }
         }
     }
-    return result;
+    return comm.max(result);
 }
 
-/// Sum over `box` of g(index). Partial sums are taken per outermost-axis slab and added in
-/// slab order, so the result is bit-identical for any thread count (issue 5: identical reruns).
+/// Sum over `box` (owned entries) of g(index), over all processes of `comm`. Partial sums are
+/// taken per outermost-axis slab and added in slab order, so the result is bit-identical for
+/// any thread count (issue 5: identical reruns).
 template <int Dim, class G>
-[[nodiscard]] double sum_over(const Box<Dim>& box, G&& g)
+[[nodiscard]] double sum_over(const Communicator& comm, const Box<Dim>& box, G&& g)
 {
     const int outer = Dim - 1;
     const int n_slabs = std::max(box.extent(outer), 0);
@@ -169,7 +174,7 @@ template <int Dim, class G>
     for (const double p : partial) {
         result += p;
     }
-    return result;
+    return comm.sum(result);
 }
 
 } // namespace fddem

@@ -8,8 +8,10 @@
 namespace fddem {
 
 template <int Dim>
-MacGrid<Dim>::MacGrid(const Index<Dim>& cells, const Vec<Dim>& origin, const Vec<Dim>& length)
-    : cells_(cells), origin_(origin), length_(length), cell_volume_(1.0), storage_size_(1)
+MacGrid<Dim>::MacGrid(const Index<Dim>& cells, const Vec<Dim>& origin, const Vec<Dim>& length,
+                      const std::array<bool, Dim>& is_periodic)
+    : cells_(cells), origin_(origin), length_(length), is_periodic_(is_periodic), cell_volume_(1.0),
+      storage_size_(1)
 {
     for (int d = 0; d < Dim; ++d) {
         if (cells_[ax(d)] < 1 || !(length_[d] > 0.0)) {

@@ -14,10 +14,30 @@
 /// Every array of the grid (cell or face) shares one memory layout: n + 1 entries per axis
 /// plus `n_ghost` layers on each side, so a cell and the faces of the same index have the
 /// same flat offset, and a neighbour along `axis` is always ±stride(axis) away.
+///
+/// Owned entries and ghosts (DESIGN.md §6). The process owns the cells of owned_cells() and the
+/// faces of owned_faces(axis); every loop that updates values runs over them, and every other
+/// entry of an array is a ghost, written only by a halo fill (grid/halo_exchange.hpp) or a
+/// boundary condition (fluid/boundary_conditions.hpp). What a process owns along one axis:
+///
+///                  cells          faces normal to the axis      faces of other axes
+///   bounded axis   [0, n)         [0, n]: both boundary faces     [0, n)
+///   periodic axis  [0, n)         [0, n): face n is the image      [0, n)
+///                                 of face 0 (the same face)
+///
+/// (A bounded axis has walls, inflows or outflows at its sides.)
+///
+/// A periodic axis has no boundary: index i and i + n are the same cell or face, and every
+/// index outside [0, n) is the image of one inside. On one process, the owner of a periodic
+/// ghost is the entry it is an image of; once the grid is split into Cartesian blocks, it is
+/// the entry of that index on the neighbouring rank, and the owned box is that rank's block.
 
 #include "fddem/core/index.hpp"
+#include "fddem/core/periodic_domain.hpp"
 #include "fddem/core/vec.hpp"
+#include "fddem/grid/communicator.hpp"
 
+#include <array>
 #include <cstddef>
 
 namespace fddem {
@@ -28,13 +48,28 @@ public:
     /// Ghost layers on every side: 2 covers the widest delta kernel (Peskin 4-point).
     static constexpr int n_ghost = 2;
 
-    /// `cells` per axis (each ≥ 1), box `origin` and `length` [m] (each > 0).
-    MacGrid(const Index<Dim>& cells, const Vec<Dim>& origin, const Vec<Dim>& length);
+    /// `cells` per axis (each ≥ 1), box `origin` and `length` [m] (each > 0), and which axes
+    /// are periodic (none by default).
+    MacGrid(const Index<Dim>& cells, const Vec<Dim>& origin, const Vec<Dim>& length,
+            const std::array<bool, Dim>& is_periodic = {});
 
     [[nodiscard]] const Index<Dim>& cells() const noexcept { return cells_; }
     [[nodiscard]] int cells(int axis) const noexcept { return cells_[ax(axis)]; }
     [[nodiscard]] const Vec<Dim>& origin() const noexcept { return origin_; }
     [[nodiscard]] const Vec<Dim>& length() const noexcept { return length_; }
+    /// Whether `axis` is periodic.
+    [[nodiscard]] bool is_periodic(int axis) const noexcept { return is_periodic_[ax(axis)]; }
+    [[nodiscard]] const std::array<bool, Dim>& periodic_axes() const noexcept
+    {
+        return is_periodic_;
+    }
+    /// The box with its periodic axes: wrapping points into it, nearest images.
+    [[nodiscard]] PeriodicDomain<Dim> domain() const noexcept
+    {
+        return {origin_, length_, is_periodic_};
+    }
+    /// The processes sharing this grid; every reduction over it goes through this.
+    [[nodiscard]] const Communicator& communicator() const noexcept { return communicator_; }
     /// Cell size along `axis` [m].
     [[nodiscard]] double spacing(int axis) const noexcept { return spacing_[axis]; }
     [[nodiscard]] const Vec<Dim>& spacing() const noexcept { return spacing_; }
@@ -46,7 +81,19 @@ public:
     [[nodiscard]] Box<Dim> cell_box() const noexcept { return {Index<Dim>{}, cells_}; }
     /// The cells this process owns (the whole domain until the grid is split across ranks).
     [[nodiscard]] Box<Dim> owned_cells() const noexcept { return cell_box(); }
-    /// All faces normal to `axis`, including those on the boundary: [0, n + e_axis).
+    /// The faces normal to `axis` this process owns: those of the owned cells (each cell owns
+    /// its low face) and, on a bounded axis, the boundary face n as well; on a periodic axis
+    /// face n is the image of face 0 and a ghost (see the table at the top).
+    [[nodiscard]] Box<Dim> owned_faces(int axis) const noexcept
+    {
+        Box<Dim> box = owned_cells();
+        if (!is_periodic(axis)) {
+            box.hi[ax(axis)] += 1;
+        }
+        return box;
+    }
+    /// All faces normal to `axis` from 0 to n (on a periodic axis face n is a ghost:
+    /// owned_faces is the box to update).
     [[nodiscard]] Box<Dim> face_box(int axis) const noexcept
     {
         return {Index<Dim>{}, cells_ + unit<Dim>(axis)};
@@ -83,6 +130,8 @@ private:
     Index<Dim> cells_;
     Vec<Dim> origin_;
     Vec<Dim> length_;
+    std::array<bool, Dim> is_periodic_;
+    Communicator communicator_;
     Vec<Dim> spacing_;
     double cell_volume_;
     std::array<std::ptrdiff_t, Dim> stride_{};

@@ -109,7 +109,7 @@ double gauss_seidel(CoarseLevel<Dim>& level, bool is_red_first)
             return row_change;
         };
         if (is_race_free) {
-            change = std::max(change, max_over_rows(all, relax_row));
+            change = std::max(change, max_over_rows(Communicator::self(), all, relax_row));
         } else {
             for_each_cell_in_vtk_order<Dim>(
                 rows, [&](const Index<Dim>& row) { change = std::max(change, relax_row(row)); });

@@ -186,6 +186,7 @@ void Simulation<Dim>::move_bodies_and_markers()
     const double dt = clock_.dt;
     measure_hydrodynamic_forces<Dim>(bodies_.all(), properties_.density, dt);
     move_bodies<Dim>(bodies_.all(), dt, contacts_ && contacts_->is_paper_coupling); // eq. (17)
+    wrap_centres<Dim>(bodies_.all(), grid_.domain()); // re-entering across periodic sides
     place_markers<Dim>(bodies_.all(), grid_, kernel_, clock_.step + 1, clock_.time + dt);
     outer_.spread_body_force(bodies_, uniform_force_, state_);
 }

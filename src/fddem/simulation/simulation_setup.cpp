@@ -22,6 +22,7 @@ MacGrid<Dim> make_grid(const CaseConfig& config)
     Index<Dim> cells{};
     Vec<Dim> origin = Vec<Dim>::Zero();
     Vec<Dim> length;
+    std::array<bool, Dim> is_periodic{};
     for (int d = 0; d < Dim; ++d) {
         const auto k = static_cast<std::size_t>(d);
         cells[k] = domain.cells[k];
@@ -29,8 +30,9 @@ MacGrid<Dim> make_grid(const CaseConfig& config)
         if (domain.origin.size() == static_cast<std::size_t>(Dim)) {
             origin[d] = domain.origin[k];
         }
+        is_periodic[k] = k < domain.periodic.size() && domain.periodic[k];
     }
-    return MacGrid<Dim>(cells, origin, length);
+    return MacGrid<Dim>(cells, origin, length, is_periodic);
 }
 
 template <int Dim>
@@ -76,7 +78,7 @@ Particles<Dim> make_particles(const CaseConfig& config, const MacGrid<Dim>& grid
         body.density = b.density;
         body.material = b.material;
         body.motion = b.motion;
-        body.centre = vector_of<Dim>(b.position);
+        body.centre = grid.domain().wrap(vector_of<Dim>(b.position)); // in the box
         if (body.motion != Motion::fixed) {
             body.velocity = vector_of<Dim>(b.velocity);
         }
@@ -132,8 +134,7 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
         DemSettings{std::move(*model), contact.velocity_damping,
                     std::max(1, contact.derived.substeps), contact.margin},
         contact.coupling == ContactCoupling::paper,
-        CellList<Dim>(grid.origin(), grid.length(), largest + contact.margin + 0.5 * smallest),
-        walls};
+        CellList<Dim>(grid.domain(), largest + contact.margin + 0.5 * smallest), walls};
 }
 
 #define FDDEM_INSTANTIATE_SETUP(DIM)                                                               \

@@ -17,7 +17,7 @@ double max_speed(const MacGrid<Dim>& grid, const FaceField<Dim>& u)
 {
     double result = 0.0;
     for (int a = 0; a < Dim; ++a) {
-        result = std::max(result, max_over(grid.face_box(a),
+        result = std::max(result, max_over(grid.communicator(), grid.owned_faces(a),
                                            [&](const Index<Dim>& c) { return std::abs(u[a](c)); }));
     }
     return result;
@@ -43,9 +43,10 @@ double max_speed_per_cell(const MacGrid<Dim>& grid, const FaceField<Dim>& u)
 {
     double result = 0.0;
     for (int a = 0; a < Dim; ++a) {
-        result = std::max(result, max_over(grid.face_box(a), [&](const Index<Dim>& c) {
-                              return std::abs(u[a](c)) / grid.spacing(a);
-                          }));
+        result = std::max(
+            result, max_over(grid.communicator(), grid.owned_faces(a), [&](const Index<Dim>& c) {
+                return std::abs(u[a](c)) / grid.spacing(a);
+            }));
     }
     return result;
 }
@@ -58,13 +59,14 @@ StepChange measure_change(const MacGrid<Dim>& grid, const FluidState<Dim>& state
         const GridArray<Dim>& ua = state.u[a];
         const GridArray<Dim>& ua_n = state.u_n[a];
         result.courant =
-            std::max(result.courant, max_over(grid.face_box(a), [&](const Index<Dim>& c) {
+            std::max(result.courant,
+                     max_over(grid.communicator(), grid.owned_faces(a), [&](const Index<Dim>& c) {
                          return std::abs(ua(c)) * dt / grid.spacing(a);
                      }));
         result.largest_change =
-            std::max(result.largest_change, max_over(grid.face_box(a), [&](const Index<Dim>& c) {
-                         return std::abs(ua(c) - ua_n(c));
-                     }));
+            std::max(result.largest_change,
+                     max_over(grid.communicator(), grid.owned_faces(a),
+                              [&](const Index<Dim>& c) { return std::abs(ua(c) - ua_n(c)); }));
     }
     return result;
 }

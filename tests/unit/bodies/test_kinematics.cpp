@@ -56,5 +56,18 @@ TEST(Kinematics, PaperCouplingTakesTheDemPositionOfABodyInContact)
     EXPECT_NEAR((bodies[1].centre - Vec<3>(0.1, 0.0, 0.0)).norm(), 0.0, 1e-15);
 }
 
+TEST(Kinematics, ABodyCrossingAPeriodicSideReentersOnTheOther)
+{
+    const PeriodicDomain<2> channel{Vec<2>::Zero(), Vec<2>(2.0, 6.0), {true, false}};
+    std::vector<Particle<2>> bodies(3);
+    bodies[0].centre = Vec<2>(-0.25, 3.0); // left through x = 0
+    bodies[1].centre = Vec<2>(2.5, -0.5);  // right through x = 2; below the floor (no wrap)
+    bodies[2].centre = Vec<2>(1.3, 4.1);   // inside: kept bit for bit
+    wrap_centres<2>(bodies, channel);
+    EXPECT_EQ(bodies[0].centre, Vec<2>(1.75, 3.0));
+    EXPECT_EQ(bodies[1].centre, Vec<2>(0.5, -0.5));
+    EXPECT_EQ(bodies[2].centre, Vec<2>(1.3, 4.1));
+}
+
 } // namespace
 } // namespace fddem

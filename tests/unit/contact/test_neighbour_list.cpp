@@ -45,42 +45,63 @@ Wander<Dim> random_bodies(int n, const Vec<Dim>& length, unsigned seed)
     return w;
 }
 
-TYPED_TEST(NeighbourListTest, NeverMissesAContactOrANearMissWhileBodiesMove)
+/// Bodies wander (and are wrapped back into the box across its periodic sides, as the
+/// simulation does after each step); at every refresh each pair and each wall closer than the
+/// margin must be a candidate.
+template <int Dim>
+void check_never_misses(const std::array<bool, Dim>& periodic)
 {
-    constexpr int Dim = TypeParam::value;
     const double margin = 0.01;
     const double largest = 0.06;
     const double skin = 0.04;
     const Vec<Dim> origin = Vec<Dim>::Zero();
     Vec<Dim> length = Vec<Dim>::Constant(Dim == 2 ? 2.0 : 0.8);
     length[1] *= 2.0;
-    CellList<Dim> cells(origin, length, 2.0 * largest + margin + skin);
+    const PeriodicDomain<Dim> domain{origin, length, periodic};
+    CellList<Dim> cells(domain, 2.0 * largest + margin + skin);
     NeighbourList<Dim> list(margin, largest, cells);
     EXPECT_NEAR(list.skin(), skin, 1e-15);
     std::array<bool, Dim> walls{};
-    walls.fill(true);
+    for (std::size_t d = 0; d < walls.size(); ++d) {
+        walls[d] = !periodic[d];
+    }
     list.set_walls(origin, length, walls);
 
     Wander<Dim> w = random_bodies<Dim>(400, length, 3);
+    if (domain.has_periodic_axis()) {
+        // Spread over the whole length of a periodic axis (there are no walls to keep off),
+        // and closer to the walls of the others (fewer walls are left to come near).
+        for (Vec<Dim>& c : w.centres) {
+            for (int d = 0; d < Dim; ++d) {
+                const double margin_from_side = periodic[static_cast<std::size_t>(d)] ? 0.0 : 0.05;
+                c[d] = margin_from_side +
+                       (c[d] - 0.1) * (length[d] - 2.0 * margin_from_side) / (length[d] - 0.2);
+            }
+        }
+    }
     std::mt19937 random(5);
     std::normal_distribution<double> step(0.0, 0.002);
     int refreshes = 0;
     int near_pairs = 0;
     int near_walls = 0;
+    int across_seam = 0;
     for (int s = 0; s < 300; ++s) {
         for (Vec<Dim>& c : w.centres) {
             for (int d = 0; d < Dim; ++d) {
                 c[d] += step(random);
             }
+            c = domain.wrap(c);
         }
         list.refresh(w.centres, w.radii, cells);
         ++refreshes;
         const auto& pairs = list.pairs();
         for (std::size_t i = 0; i < w.centres.size(); ++i) {
             for (std::size_t j = i + 1; j < w.centres.size(); ++j) {
-                const double gap = (w.centres[i] - w.centres[j]).norm() - w.radii[i] - w.radii[j];
+                const Vec<Dim> apart = w.centres[i] - w.centres[j];
+                const double gap = domain.minimum_image(apart).norm() - w.radii[i] - w.radii[j];
                 if (gap < margin) {
                     ++near_pairs;
+                    across_seam += domain.minimum_image(apart) != apart ? 1 : 0;
                     ASSERT_TRUE(std::binary_search(
                         pairs.begin(), pairs.end(),
                         std::make_pair(static_cast<int>(i), static_cast<int>(j))))
@@ -88,7 +109,7 @@ TYPED_TEST(NeighbourListTest, NeverMissesAContactOrANearMissWhileBodiesMove)
                 }
             }
             for (int d = 0; d < Dim; ++d) {
-                for (int side = 0; side < 2; ++side) {
+                for (int side = 0; side < 2 && walls[static_cast<std::size_t>(d)]; ++side) {
                     const double gap = side == 0
                                            ? w.centres[i][d] - origin[d] - w.radii[i]
                                            : origin[d] + length[d] - w.centres[i][d] - w.radii[i];
@@ -105,13 +126,31 @@ TYPED_TEST(NeighbourListTest, NeverMissesAContactOrANearMissWhileBodiesMove)
                 }
             }
         }
+        for (const WallCandidate& c : list.walls()) {
+            EXPECT_TRUE(walls[static_cast<std::size_t>(c.axis)]); // no wall on a periodic axis
+        }
     }
     EXPECT_GT(near_pairs, 100); // the test saw contacts and near misses to check
     EXPECT_GT(near_walls, 10);
+    EXPECT_EQ(across_seam > 10, domain.has_periodic_axis()); // and pairs across the seam
     // A body moves about 0.002·√Dim per refresh: half the skin after tens of refreshes for a
     // typical body, sooner for the fastest of 400; far fewer builds than refreshes.
     EXPECT_LT(list.builds(), refreshes / 3);
     EXPECT_GT(list.builds(), 1);
+}
+
+TYPED_TEST(NeighbourListTest, NeverMissesAContactOrANearMissWhileBodiesMove)
+{
+    constexpr int Dim = TypeParam::value;
+    check_never_misses<Dim>({});
+}
+
+TYPED_TEST(NeighbourListTest, NeverMissesAContactAcrossAPeriodicSide)
+{
+    constexpr int Dim = TypeParam::value;
+    std::array<bool, Dim> periodic{};
+    periodic[0] = true; // a side across which bodies wander, and walls across the others
+    check_never_misses<Dim>(periodic);
 }
 
 TEST(NeighbourList, WithoutSkinItRebuildsEveryTime)

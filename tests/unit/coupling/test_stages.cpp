@@ -63,6 +63,58 @@ TEST(MarkerPlacement, ABodyOutOfTheBoxIsANumericalErrorNamingIt)
                  NumericalError);
 }
 
+TEST(MarkerPlacement, MarkersOfABodyAcrossAPeriodicSideAreOnBothSidesInsideTheBox)
+{
+    // Centred on the seam x = 0 ≡ 1: before the halo seam this stopped the run ("a marker of
+    // the body left the box").
+    const MacGrid<2> channel(Index<2>{32, 32}, Vec<2>::Zero(), Vec<2>(1.0, 1.0), {true, false});
+    std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.0, 0.5))};
+    place_markers<2>(bodies, channel, AnyKernel{Peskin4Kernel{}}, 0, 0.0);
+    const MarkerCoupling<2>& c = bodies[0].coupling;
+    int left = 0;
+    int right = 0;
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        EXPECT_GE(c.positions[l].x(), 0.0);
+        EXPECT_LT(c.positions[l].x(), 1.0);
+        // the marker's image next to the centre is where the offset puts it
+        const Vec<2> apart = channel.domain().minimum_image(c.positions[l] - bodies[0].centre);
+        EXPECT_NEAR((apart - c.offsets[l]).norm(), 0.0, 1e-15);
+        left += c.positions[l].x() > 0.5 ? 1 : 0;
+        right += c.positions[l].x() < 0.5 && c.offsets[l].x() > 0.0 ? 1 : 0;
+    }
+    EXPECT_GT(left, 0);
+    EXPECT_GT(right, 0);
+}
+
+TEST(ForceSpreading, AcrossAPeriodicSideTheFacesThereReceiveAllOfIt)
+{
+    // A body centred on the seam: its markers spread into the ghosts on both sides, and
+    // accumulate adds that to the faces on the other side: Σ over the owned faces is the
+    // uniform force over the box plus ρf Σ ΔV_l λ_l, as inside the box.
+    const MacGrid<2> channel(Index<2>{32, 32}, Vec<2>::Zero(), Vec<2>(1.0, 1.0), {true, false});
+    std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.01, 0.5))};
+    place_markers<2>(bodies, channel, AnyKernel{Peskin4Kernel{}}, 0, 0.0);
+    MarkerCoupling<2>& c = bodies[0].coupling;
+    Vec<2> total = Vec<2>::Zero();
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        c.lambda[l] = Vec<2>(1.0 + std::sin(3.0 * l), std::cos(2.0 * l));
+        total += c.markers.volumes[l] * c.lambda[l];
+    }
+    FaceField<2> force(channel);
+    const Vec<2> uniform(0.5, -1.0);
+    spread_marker_forces<2>(bodies, channel, AnyKernel{Peskin4Kernel{}}, 2.0, uniform, force);
+    for (int a = 0; a < 2; ++a) {
+        const double sum = sum_over(channel.communicator(), channel.owned_faces(a),
+                                    [&](const Index<2>& f) { return force[a](f); });
+        const double faces = static_cast<double>(channel.owned_faces(a).size());
+        EXPECT_NEAR(sum * channel.cell_volume(),
+                    uniform[a] * faces * channel.cell_volume() + 2.0 * total[a], 1e-12);
+    }
+    // The periodic ghosts are images of their faces again.
+    EXPECT_EQ(force[0](Index<2>{32, 16}), force[0](Index<2>{0, 16}));
+    EXPECT_EQ(force[1](Index<2>{-1, 16}), force[1](Index<2>{31, 16}));
+}
+
 TEST(ForceSpreading, AddsExactlyTheMarkersTotalForceToTheUniformOne)
 {
     // Σ_faces f ΔV_cell = F_uniform V_box + ρf Σ_l ΔV_l λ_l: D conserves the force.
@@ -86,8 +138,9 @@ TEST(ForceSpreading, AddsExactlyTheMarkersTotalForceToTheUniformOne)
         inner.lo[static_cast<std::size_t>(a)] += 1;
         inner.hi[static_cast<std::size_t>(a)] -= 1;
         const double uniform = a == 1 ? -1.0 : 0.0;
-        const double sum = sum_over(
-            inner, [&](const Index<2>& f) { return (force[a](f) - uniform) * grid.cell_volume(); });
+        const double sum = sum_over(grid.communicator(), inner, [&](const Index<2>& f) {
+            return (force[a](f) - uniform) * grid.cell_volume();
+        });
         EXPECT_NEAR(sum, rho * total[a], 1e-12 * rho * c.markers.size());
     }
 }

@@ -32,7 +32,7 @@ TEST(BoundaryConditions, TangentialGhostContinuesTheQuadraticThroughTheWallValue
 
 TEST(BoundaryConditions, PeriodicGhostsAreImages)
 {
-    const MacGrid<2> grid({5, 4}, Vec<2>::Zero(), Vec<2>::Ones());
+    const MacGrid<2> grid({5, 4}, Vec<2>::Zero(), Vec<2>::Ones(), {true, false});
     auto bc = BoundaryConditions<2>::closed_box();
     bc.is_periodic = {true, false};
     FaceField<2> u(grid);
@@ -57,7 +57,7 @@ TEST(BoundaryConditions, PeriodicGhostsAreImages)
 
 TEST(BoundaryConditions, UnknownFacesExcludeWallFacesOnly)
 {
-    const MacGrid<3> grid({4, 5, 6}, Vec<3>::Zero(), Vec<3>::Ones());
+    const MacGrid<3> grid({4, 5, 6}, Vec<3>::Zero(), Vec<3>::Ones(), {false, true, false});
     auto bc = BoundaryConditions<3>::closed_box();
     bc.is_periodic = {false, true, false};
     EXPECT_EQ(unknown_faces(grid, bc, 0).size(), static_cast<std::size_t>(3 * 5 * 6));
@@ -100,7 +100,7 @@ TEST(BoundaryConditions, ParabolicInflowAndOutflowCarryTheSameVolumeFlux)
 
 TEST(BoundaryConditions, HighSideInflowPointsIntoTheBox)
 {
-    const MacGrid<3> grid({4, 4, 4}, Vec<3>::Zero(), Vec<3>::Ones());
+    const MacGrid<3> grid({4, 4, 4}, Vec<3>::Zero(), Vec<3>::Ones(), {true, false, false});
     auto bc = BoundaryConditions<3>::closed_box();
     bc.kind[2] = {BoundaryKind::outflow, BoundaryKind::inflow};
     bc.is_periodic = {true, false, false};

@@ -63,9 +63,9 @@ Outcome<Dim> run_update(const ModeSetup<Dim>& s, PressureUpdate update, double e
 {
     Index<Dim> cells{};
     cells.fill(s.n);
-    const MacGrid<Dim> grid(cells, Vec<Dim>::Zero(), Vec<Dim>::Ones());
     auto bc = BoundaryConditions<Dim>::closed_box();
     bc.is_periodic.fill(true);
+    const MacGrid<Dim> grid(cells, Vec<Dim>::Zero(), Vec<Dim>::Ones(), bc.is_periodic);
     const FluidProperties fluid{s.density, s.viscosity};
     FluidState<Dim> state(grid);
     CellField<Dim> mode(grid);

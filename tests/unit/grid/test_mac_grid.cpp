@@ -74,5 +74,38 @@ TYPED_TEST(MacGridTest, OffsetsAreUniqueAndNeighboursAreOneStrideApart)
     }
 }
 
+TYPED_TEST(MacGridTest, OwnedFacesIncludeTheBoundaryFacesOfWalledAxesOnly)
+{
+    constexpr int Dim = TypeParam::value;
+    const auto walled = make_grid<Dim>();
+    std::array<bool, Dim> periodic{};
+    periodic[0] = true;
+    const MacGrid<Dim> channel(walled.cells(), walled.origin(), walled.length(), periodic);
+    EXPECT_TRUE(channel.is_periodic(0));
+    EXPECT_TRUE(channel.domain().periodic(0));
+    for (const MacGrid<Dim>* grid : {&walled, &channel}) {
+        EXPECT_EQ(grid->owned_cells().lo, grid->cell_box().lo);
+        EXPECT_EQ(grid->owned_cells().hi, grid->cell_box().hi);
+        for (int axis = 0; axis < Dim; ++axis) {
+            const Box<Dim> owned = grid->owned_faces(axis);
+            for (int d = 0; d < Dim; ++d) {
+                const auto k = static_cast<std::size_t>(d);
+                EXPECT_EQ(owned.lo[k], 0);
+                // n + 1 faces normal to a walled axis (both boundary faces), n on a periodic
+                // one (face n is face 0), n along the other axes.
+                const bool has_boundary_face = d == axis && !grid->is_periodic(d);
+                EXPECT_EQ(owned.hi[k], grid->cells(d) + (has_boundary_face ? 1 : 0));
+            }
+        }
+    }
+    // Every owned face is a distinct face: n per axis of a fully periodic box.
+    std::array<bool, Dim> all{};
+    all.fill(true);
+    const MacGrid<Dim> torus(walled.cells(), walled.origin(), walled.length(), all);
+    for (int axis = 0; axis < Dim; ++axis) {
+        EXPECT_EQ(torus.owned_faces(axis).size(), torus.n_cells());
+    }
+}
+
 } // namespace
 } // namespace fddem

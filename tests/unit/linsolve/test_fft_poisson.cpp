@@ -57,7 +57,7 @@ double max_error_for_mode(const std::array<bool, Dim>& periodic, bool is_measure
     for_each_index(grid.cell_box(), [&](const Index<Dim>& c) { rhs(c) = mode(c) + 7.0; });
     FftPoissonSolver<Dim> solver(grid, periodic, is_measured);
     solver.solve(rhs, phi);
-    return max_over(grid.cell_box(),
+    return max_over(grid.communicator(), grid.owned_cells(),
                     [&](const Index<Dim>& c) { return std::abs(phi(c) - mode(c) / lambda); }) *
            std::abs(lambda);
 }

@@ -1,22 +1,23 @@
 // SPDX-License-Identifier: MIT
-// `fddem run --restart RUN_DIR`: restore the newest usable checkpoint, check that the outputs
-// hold what it records (all before anything is written), cut the outputs back to its step,
-// then continue with the shared time loop (app/run.cpp).
+// A restarted run: restore the newest usable checkpoint, check that the outputs hold what it
+// records (all before anything is written), cut the outputs back to its step, then continue
+// with the shared time loop (driver.cpp).
 
 #include "fddem/core/errors.hpp"
 #include "fddem/io/atomic_file.hpp"
 #include "fddem/io/case_changes.hpp"
 #include "fddem/io/checkpoint.hpp"
-#include "fddem/io/run_directory.hpp"
+#include "fddem/io/checkpoint_files.hpp"
+#include "fddem/run/driver.hpp"
+#include "fddem/run/run_messages.hpp"
 
 #include <fmt/format.h>
 
 #include <optional>
 #include <utility>
+#include <vector>
 
-#include "run.hpp"
-
-namespace fddem::app {
+namespace fddem {
 namespace {
 
 namespace fs = std::filesystem;
@@ -49,7 +50,7 @@ std::pair<std::string, std::string> end_reason(const CaseConfig& config, const C
 } // namespace
 
 template <int Dim>
-int Run<Dim>::resume(bool has_overrides)
+RunResult Driver<Dim>::resume(bool rewrite_case)
 {
     std::vector<Damaged> damaged;
     std::optional<CheckpointEntry> used;
@@ -67,8 +68,8 @@ int Run<Dim>::resume(bool has_overrides)
     }
     if (!used) {
         std::string reasons;
-        for (const Damaged& d : damaged) {
-            reasons += fmt::format("; {} {}", d.path.filename().string(), d.reason);
+        for (const Damaged& file : damaged) {
+            reasons += fmt::format("; {} {}", file.path.filename().string(), file.reason);
         }
         throw InputError(checkpoint_directory(directory_).string(), 0, "",
                          damaged.empty() ? std::string("no checkpoint to restart from")
@@ -77,60 +78,44 @@ int Run<Dim>::resume(bool has_overrides)
     const Clock& clock = sim_.clock();
     if (sim_.is_finished(record_.last)) {
         const auto [reason, extend] = end_reason(config_, clock, sim_.at_rest_since());
-        progress_.message(fmt::format(
+        monitor_.message(fmt::format(
             "fddem: {} is complete: step {}, t = {:g} s is the end of its case ({}); nothing to "
             "do. To run further: fddem run --restart {} --set {}",
             directory_.string(), clock.step, clock.time, reason, directory_.string(), extend));
-        return exit_success;
+        return {RunResult::Outcome::completed, 0};
     }
-    const fs::path solver_path = directory_ / "solver.csv";
-    const fs::path particles_path = directory_ / "particles.csv";
-    check_history(solver_path, solver_columns(), record_.solver_csv_bytes);
-    if (!sim_.bodies().empty()) {
-        check_history(particles_path, particle_columns(), record_.particles_csv_bytes);
-    }
+    outputs_.check(record_);
 
     // Nothing was written so far; from here on the run directory is brought back to the step.
-    for (const Damaged& d : damaged) {
-        fs::path aside = d.path;
+    for (const Damaged& file : damaged) {
+        fs::path aside = file.path;
         aside += ".damaged";
-        fs::rename(d.path, aside);
-        progress_.message(fmt::format("fddem: checkpoint {} {}; set aside as {}", d.path.string(),
-                                      d.reason, aside.filename().string()));
+        fs::rename(file.path, aside);
+        monitor_.message(fmt::format("fddem: checkpoint {} {}; set aside as {}", file.path.string(),
+                                     file.reason, aside.filename().string()));
     }
-    progress_.message(fmt::format("fddem: restarting {} from step {} (t = {:g} s), {}",
-                                  directory_.string(), clock.step, clock.time,
-                                  used->path.filename().string()));
+    monitor_.message(fmt::format("fddem: restarting {} from step {} (t = {:g} s), {}",
+                                 directory_.string(), clock.step, clock.time,
+                                 used->path.filename().string()));
     for (const std::string& change : case_changes(checkpoint_case, config_.as_run)) {
         if (!change.starts_with("derived.")) {
-            progress_.message("fddem: changed since the checkpoint: " + change);
+            monitor_.message("fddem: changed since the checkpoint: " + change);
         }
     }
-    if (has_overrides) {
+    if (rewrite_case) {
         write_file_atomically(directory_ / "case.toml", config_.as_run);
     }
     for (const char* folder : {"", "fields", "particles", "samples", "checkpoints"}) {
         remove_stale_temporaries(directory_ / folder);
     }
-    truncate_history(solver_path, record_.solver_csv_bytes);
-    solver_ = std::make_unique<CsvHistory>(solver_path, solver_columns(), CsvHistory::Continue{});
-    pvd_.assign(record_.field_frames);
-    remove_unlisted_files(directory_, "fields", ".vtr", record_.field_frames);
-    if (!sim_.bodies().empty()) {
-        truncate_history(particles_path, record_.particles_csv_bytes);
-        particles_ = std::make_unique<CsvHistory>(particles_path, particle_columns(),
-                                                  CsvHistory::Continue{});
-        particles_pvd_.assign(record_.particle_frames);
-        remove_unlisted_files(directory_, "particles", ".vtp", record_.particle_frames);
-    }
+    outputs_.continue_from(record_);
     ++record_.restarts;
     last_checkpoint_ = used->path;
-    progress_.resume_from(clock.step, clock.time);
-    report_derived();
+    report_derived_values(config_, monitor_);
     return step_to_end();
 }
 
-template int Run<2>::resume(bool);
-template int Run<3>::resume(bool);
+template RunResult Driver<2>::resume(bool);
+template RunResult Driver<3>::resume(bool);
 
-} // namespace fddem::app
+} // namespace fddem

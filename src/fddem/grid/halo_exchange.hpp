@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The halo seam (DESIGN.md §6): the two exchanges between the entries a process owns and the
+/// ghosts that are images of entries owned elsewhere.
+///
+///   fill:        every such ghost takes the value of its owner (before a stencil or the
+///                interpolation I reads across the seam);
+///   accumulate:  every such ghost's value is added to its owner and the ghost is zeroed
+///                (after the spreading D wrote into ghosts: the reverse halo sum).
+///
+/// accumulate is the adjoint of fill: ⟨fill x, y⟩ = ⟨x, accumulate y⟩ over all entries, ghosts
+/// included; that is what makes D stay the adjoint of I across a seam. The sum over all entries
+/// is kept by accumulate, so momentum spread into ghosts is not lost.
+///
+/// Spreading protocol: zero_ghosts(a); spread into a (owned entries and ghosts); accumulate(a);
+/// then fill(a) if the ghosts are read again. The ghosts must hold only what was spread into
+/// them, hence the zero_ghosts first.
+///
+/// Single process (this implementation): the only such ghosts are those across periodic axes,
+/// whose owner is the entry one period away (index i mod n along the axis, MacGrid's table).
+/// Ghosts across the other sides belong to the boundary conditions (fluid/boundary_conditions)
+/// and are left untouched. Axes are exchanged one after the other over the whole storage
+/// extent of the others (fill in axis order, accumulate in reverse), so edge and corner ghosts
+/// of a doubly periodic box are right as well.
+///
+/// Many processes (not yet): the owned box is the rank's Cartesian block, the ghosts of an
+/// interior side are filled from the neighbouring rank's owned entries with the same global
+/// index (cells and faces alike: a face on a block interface is owned by the rank above it),
+/// and accumulate sends ghost values to that rank, which adds them in a fixed order. The halo is
+/// MacGrid::n_ghost ≥ the widest kernel's support, and this class then holds the neighbour
+/// ranks and the message buffers; its callers do not change.
+
+#include "fddem/grid/fields.hpp"
+#include "fddem/grid/mac_grid.hpp"
+
+namespace fddem {
+
+template <int Dim>
+class HaloExchange {
+public:
+    /// For the arrays of `grid` (which must outlive this object).
+    explicit HaloExchange(const MacGrid<Dim>& grid) noexcept : grid_(&grid) {}
+
+    /// Ghosts that are images of owned entries ← their owners' values.
+    void fill(GridArray<Dim>& a) const;
+    void fill(FaceField<Dim>& u) const;
+
+    /// Owners += the values of their image ghosts, in a fixed order; those ghosts ← 0.
+    void accumulate(GridArray<Dim>& a) const;
+    void accumulate(FaceField<Dim>& u) const;
+
+    /// Those ghosts ← 0: before spreading into an array whose ghosts hold other values.
+    void zero_ghosts(GridArray<Dim>& a) const;
+    void zero_ghosts(FaceField<Dim>& u) const;
+
+private:
+    const MacGrid<Dim>* grid_;
+};
+
+} // namespace fddem

@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: MIT
+// A run from its start: the run directory, the initial outputs, the time loop with its outputs
+// and checkpoints, and the end of the run (also the end of a restarted run).
+
+#include "fddem/run/driver.hpp"
+
+#include "fddem/core/errors.hpp"
+#include "fddem/io/atomic_file.hpp"
+#include "fddem/io/checkpoint.hpp"
+#include "fddem/io/checkpoint_files.hpp"
+#include "fddem/io/run_directory.hpp"
+#include "fddem/run/body_snapshot.hpp"
+#include "fddem/run/line_samples.hpp"
+#include "fddem/run/output_schedule.hpp"
+#include "fddem/run/run_messages.hpp"
+#include "fddem/run/run_summary.hpp"
+
+#include <fmt/format.h>
+
+#include <utility>
+
+namespace fddem {
+
+namespace fs = std::filesystem;
+using Seconds = std::chrono::duration<double>;
+
+template <int Dim>
+Driver<Dim>::Driver(const CaseConfig& config, fs::path directory, RunMonitor& monitor)
+    : config_(config), sim_(config), directory_(std::move(directory)), monitor_(monitor),
+      outputs_(directory_, body_count(sim_) > 0)
+{
+}
+
+template <int Dim>
+RunResult Driver<Dim>::start(bool overwrite)
+{
+    prepare_run_directory(directory_, overwrite);
+    // A forced rerun must not leave the old run's checkpoints for a later --restart to find.
+    for (const CheckpointEntry& old : list_checkpoints(directory_)) {
+        fs::remove(old.path);
+    }
+    write_file_atomically(directory_ / "case.toml", config_.as_run);
+    outputs_.create();
+    if (outputs_.has_bodies()) {
+        outputs_.append_particles(sim_);
+    }
+    report_derived_values(config_, monitor_);
+    outputs_.write_frame(sim_);
+    record_.next_particle_time = config_.output.particle_interval;
+    record_.next_field_time = config_.output.field_interval;
+    record_.next_checkpoint_time = config_.checkpoint.time_interval;
+    return step_to_end();
+}
+
+template <int Dim>
+double Driver<Dim>::wall_seconds() const
+{
+    return wall_seconds_before_ + Seconds(std::chrono::steady_clock::now() - loop_start_).count();
+}
+
+template <int Dim>
+RunResult Driver<Dim>::step_to_end()
+{
+    monitor_.loop_started(sim_.clock().step, sim_.clock().time);
+    wall_seconds_before_ = record_.wall_seconds;
+    loop_start_ = std::chrono::steady_clock::now();
+    std::string failure;
+    bool is_finished = false;
+    int signal = 0;
+    try {
+        do {
+            const StepReport report = sim_.advance();
+            record_.last = report;
+            record_.total_outer_iterations += report.outer_iterations;
+            const Clock& clock = sim_.clock();
+            outputs_.append_step(clock, report, record_.total_outer_iterations, wall_seconds());
+            watch_step(report, clock, config_, record_, monitor_);
+            monitor_.step_done(clock.step, clock.time, report.outer_iterations);
+            write_scheduled_outputs();
+            is_finished = sim_.is_finished(report);
+            signal = is_finished ? 0 : monitor_.pending_interrupt();
+            // The last step's checkpoint follows the end-of-run outputs (below).
+            if (!is_finished && (take_due_checkpoint(clock, config_.checkpoint.step_interval,
+                                                     config_.checkpoint.time_interval,
+                                                     record_.next_checkpoint_time) ||
+                                 signal != 0)) {
+                write_checkpoint_now(outputs_.n_frames());
+            }
+        } while (!is_finished && signal == 0);
+    } catch (const NumericalError& e) {
+        failure =
+            fmt::format("step {}, t = {:g} s, in {}: {}", e.step(), e.time(), e.where(), e.what());
+    }
+    monitor_.loop_ended();
+    record_.wall_seconds = wall_seconds();
+    return end_run(failure, signal);
+}
+
+template <int Dim>
+RunResult Driver<Dim>::end_run(const std::string& failure, int signal)
+{
+    const Clock& clock = sim_.clock();
+    if (!failure.empty()) {
+        // The simulation is back at the end of the last good step (Simulation::advance): its
+        // fields and samples close the outputs, and its checkpoint lets the run go on from
+        // there, with a smaller Δt say.
+        close_outputs("failed: " + failure);
+        monitor_.message(fmt::format(
+            "fddem: numerical failure at {}\n  the outputs up to the last good step (step {}, "
+            "t = {:.6g} s) are in {},\n  with a checkpoint of that state, {}; continue from it "
+            "with: fddem run --restart {} --set time.dt=...",
+            failure, clock.step, clock.time, directory_.string(), last_checkpoint_.string(),
+            directory_.string()));
+        return {RunResult::Outcome::numerical_failure, 0};
+    }
+    if (signal != 0) {
+        write_summary(fmt::format("interrupted by {} at step {}", signal_name(signal), clock.step));
+        monitor_.message(fmt::format(
+            "fddem: interrupted by {}: stopped after step {} (t = {:.6g} s) with a checkpoint, "
+            "{}\n  continue with: fddem run --restart {}",
+            signal_name(signal), clock.step, clock.time, last_checkpoint_.string(),
+            directory_.string()));
+        return {RunResult::Outcome::interrupted, signal};
+    }
+    // Its checkpoint lets `fddem run --restart DIR --set time.end=…` extend a finished run.
+    close_outputs("completed");
+    monitor_.message(completion_message());
+    return {RunResult::Outcome::completed, 0};
+}
+
+template <int Dim>
+void Driver<Dim>::write_scheduled_outputs()
+{
+    const Clock& clock = sim_.clock();
+    if (outputs_.has_bodies() &&
+        take_due_output(clock, config_.output.particle_interval, record_.next_particle_time)) {
+        outputs_.append_particles(sim_);
+    }
+    // output.field_interval = 0: no frames between the first and the last.
+    if (config_.output.field_interval > 0.0 &&
+        take_due_output(clock, config_.output.field_interval, record_.next_field_time)) {
+        outputs_.write_frame(sim_);
+    }
+}
+
+template <int Dim>
+std::string Driver<Dim>::completion_message() const
+{
+    const auto rest = sim_.at_rest_since();
+    const std::string settled =
+        rest && config_.time.rest_speed
+            ? fmt::format(" (every free body slower than time.rest_speed = {:g} since t = {:g} s)",
+                          *config_.time.rest_speed, *rest)
+            : std::string();
+    return fmt::format("fddem: {}: {} steps to t = {:.6g} s{}, {} outer iterations, {:.2f} s; "
+                       "results in {}",
+                       config_.source_file, sim_.clock().step, sim_.clock().time, settled,
+                       record_.total_outer_iterations, record_.wall_seconds, directory_.string());
+}
+
+template <int Dim>
+void Driver<Dim>::close_outputs(const std::string& status)
+{
+    // A closing field frame off the output schedule is left out of the checkpoint's frames:
+    // a continued run drops it and writes its frames on the schedule.
+    const std::size_t n_frames = outputs_.n_frames();
+    if (!outputs_.has_frame_at(sim_.clock().time)) {
+        outputs_.write_frame(sim_);
+    }
+    write_line_samples(sim_, config_.output.lines, directory_);
+    write_summary(status);
+    write_checkpoint_now(n_frames);
+}
+
+template <int Dim>
+void Driver<Dim>::write_checkpoint_now(std::size_t n_frames)
+{
+    outputs_.record_lengths(record_, n_frames);
+    record_.wall_seconds = wall_seconds();
+    fs::create_directories(checkpoint_directory(directory_));
+    last_checkpoint_ = checkpoint_path(directory_, sim_.clock().step);
+    write_checkpoint(last_checkpoint_, sim_, record_);
+    prune_checkpoints(directory_, config_.checkpoint.keep);
+}
+
+template <int Dim>
+void Driver<Dim>::write_summary(const std::string& status) const
+{
+    write_run_summary(sim_, config_, record_, status, directory_ / "summary.json");
+}
+
+template class Driver<2>;
+template class Driver<3>;
+
+} // namespace fddem

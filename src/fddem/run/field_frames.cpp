@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/run/field_frames.hpp"
+
+#include "fddem/run/body_snapshot.hpp"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace fddem {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// `value` in the first Dim of three components (VTK points and vectors are 3D).
+template <int Dim>
+std::array<double, 3> padded(const Vec<Dim>& value)
+{
+    std::array<double, 3> xyz{};
+    for (int d = 0; d < Dim; ++d) {
+        xyz.at(static_cast<std::size_t>(d)) = value[d];
+    }
+    return xyz;
+}
+
+/// An angular velocity as a 3-vector: about z in 2D.
+template <int Dim>
+std::array<double, 3> spin_vector(const AngularVec<Dim>& omega)
+{
+    if constexpr (Dim == 2) {
+        return {0.0, 0.0, omega};
+    } else {
+        return padded<3>(omega);
+    }
+}
+
+} // namespace
+
+template <int Dim>
+void write_frame(const Simulation<Dim>& sim, const fs::path& directory, PvdCollection& fields,
+                 PvdCollection& particles)
+{
+    const std::size_t frame = fields.entries().size();
+    const std::string name = fmt::format("fields/fields_{:06d}.vtr", frame);
+    // Read-only access (sim is const): the mutable fluid() would invalidate the reusable
+    // assembly and make the results depend on when outputs are written.
+    write_vtr(directory / name, sim.grid(), sim.fluid().u, sim.fluid().p);
+    fields.add(sim.clock().time, name);
+    const std::vector<BodySnapshot<Dim>> bodies = body_snapshots(sim);
+    if (bodies.empty()) {
+        return;
+    }
+    std::vector<std::array<double, 3>> centres;
+    std::vector<double> radii;
+    std::vector<std::array<double, 3>> velocities;
+    std::vector<std::array<double, 3>> spins;
+    for (const BodySnapshot<Dim>& body : bodies) {
+        centres.push_back(padded<Dim>(body.centre));
+        radii.push_back(body.radius);
+        velocities.push_back(padded<Dim>(body.velocity));
+        spins.push_back(spin_vector<Dim>(body.omega));
+    }
+    const std::string file = fmt::format("particles/particles_{:06d}.vtp", frame);
+    fs::create_directories(directory / "particles");
+    write_vtp(directory / file, centres, radii, velocities, spins);
+    particles.add(sim.clock().time, file);
+}
+
+template void write_frame(const Simulation<2>&, const fs::path&, PvdCollection&, PvdCollection&);
+template void write_frame(const Simulation<3>&, const fs::path&, PvdCollection&, PvdCollection&);
+
+} // namespace fddem

@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/run/run_case.hpp"
+
+#include "fddem/core/errors.hpp"
+#include "fddem/io/case_reader.hpp"
+#include "fddem/io/checkpoint_files.hpp"
+
+#include <system_error>
+
+namespace fddem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// `go(driver)` with the driver of the case's dimension.
+template <class Go>
+RunResult drive(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
+                const Go& go)
+{
+    if (config.domain.dimension == 2) {
+        Driver<2> driver(config, directory, monitor);
+        return go(driver);
+    }
+    Driver<3> driver(config, directory, monitor);
+    return go(driver);
+}
+
+} // namespace
+
+RunResult run_case(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
+                   bool overwrite)
+{
+    return drive(config, directory, monitor,
+                 [overwrite](auto& driver) { return driver.start(overwrite); });
+}
+
+CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::string>& overrides)
+{
+    std::error_code error;
+    if (!fs::is_directory(directory, error)) {
+        throw InputError(directory.string(), 0, "",
+                         fs::exists(directory, error) ? "cannot restart: not a run directory"
+                                                      : "cannot restart: no such run directory");
+    }
+    const fs::path case_file = directory / "case.toml";
+    if (!fs::exists(case_file, error)) {
+        throw InputError(case_file.string(), 0, "",
+                         "cannot restart: missing (not an fddem run directory?)");
+    }
+    CaseConfig config = read_case(case_file.string(), overrides);
+    if (list_checkpoints(directory).empty()) {
+        throw InputError(checkpoint_directory(directory).string(), 0, "",
+                         "cannot restart: no checkpoint (a run writes one every "
+                         "checkpoint.step_interval steps, at its end and when interrupted)");
+    }
+    return config;
+}
+
+RunResult restart_run(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
+                      bool rewrite_case)
+{
+    return drive(config, directory, monitor,
+                 [rewrite_case](auto& driver) { return driver.resume(rewrite_case); });
+}
+
+} // namespace fddem

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/run/run_messages.hpp"
+
+#include "fddem/io/case_names.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace fddem {
+namespace {
+
+/// Courant number above which a step is reported (implicit Euler is stable beyond it, but the
+/// SIMPLE iterations and the time accuracy degrade).
+constexpr double courant_warning = 2.0;
+/// Not-converged steps reported one by one before only the count goes on.
+constexpr long max_reported_unconverged = 10;
+/// Relative contact overlap that gets a warning.
+constexpr double overlap_warning = 0.05;
+
+/// The end of both contact messages: what the lightest body's wall collision comes to.
+std::string collision_text(const CaseConfig& config)
+{
+    return fmt::format("with restitution {:.4g}; {} DEM sub-steps per time step",
+                       config.contact.derived.restitution, config.contact.derived.substeps);
+}
+
+} // namespace
+
+void report_derived_values(const CaseConfig& config, RunMonitor& monitor)
+{
+    const ContactConfig& contact = config.contact;
+    const ContactDerived& derived = contact.derived;
+    if (derived.impact_velocity > 0.0) {
+        monitor.message(fmt::format("fddem: contact ({}, {} coupling): a wall collision of the "
+                                    "lightest body at impact speed {:.3g} lasts {:.3g} s "
+                                    "(undamped) {}",
+                                    name_of(contact.model), name_of(contact.coupling),
+                                    derived.impact_velocity, derived.duration,
+                                    collision_text(config)));
+    }
+    if (derived.stiffness > 0.0) {
+        monitor.message(fmt::format("fddem: contact ({} coupling): k = {:.6g}, c = {:.6g}; a wall "
+                                    "collision of the lightest body lasts {:.3g} s {}",
+                                    name_of(contact.coupling), derived.stiffness, derived.damping,
+                                    derived.duration, collision_text(config)));
+    }
+    const NondimensionalConfig& nondimensional = config.nondimensional;
+    if (!nondimensional.reynolds) {
+        return;
+    }
+    std::string text =
+        fmt::format("fddem: derived from [nondimensional] (Re = {:g}", *nondimensional.reynolds);
+    if (nondimensional.density_ratio) {
+        text += fmt::format(", density ratio {:g}, W/D = {:g}): viscosity {:.6g}, body "
+                            "density {:.6g}, gravity {:.6g}, wall factor K = {:.6f}",
+                            *nondimensional.density_ratio,
+                            config.domain.size[0] / config.bodies.front().diameter,
+                            config.fluid.viscosity, config.bodies.front().density,
+                            -config.fluid.gravity[1], nondimensional.wall_factor);
+    } else {
+        text += fmt::format("): viscosity {:.6g}", config.fluid.viscosity);
+    }
+    monitor.message(text);
+}
+
+void watch_step(const StepReport& report, const Clock& clock, const CaseConfig& config,
+                RunRecord& record, RunMonitor& monitor)
+{
+    if (report.max_relative_overlap > record.max_relative_overlap) {
+        record.max_overlap = report.max_overlap;
+        record.max_relative_overlap = report.max_relative_overlap;
+        record.max_overlap_time = clock.time;
+        if (record.max_relative_overlap > overlap_warning && !record.has_warned_overlap) {
+            record.has_warned_overlap = true;
+            monitor.message(
+                fmt::format("warning: t = {:g} s: contact overlap {:.3g} is {:.1f} % of the radius "
+                            "(above {:g} %); stiffen the contact (contact.stiffness or a shorter "
+                            "contact.duration)",
+                            clock.time, record.max_overlap, 100.0 * record.max_relative_overlap,
+                            100.0 * overlap_warning));
+        }
+    }
+    if (!report.is_converged) {
+        ++record.unconverged_steps;
+        if (record.unconverged_steps <= max_reported_unconverged) {
+            monitor.message(fmt::format(
+                "warning: step {} (t = {:g} s): SIMPLE not converged in {} outer iterations "
+                "(mass residual {:.2e}, momentum residual {:.2e}, tolerance {:g}){}",
+                clock.step, clock.time, report.outer_iterations, report.mass_residual,
+                report.momentum_residual, config.simple.tolerance,
+                record.unconverged_steps == max_reported_unconverged ? "; further ones only counted"
+                                                                     : ""));
+        }
+    }
+    if (report.courant > courant_warning && !record.has_warned_courant) {
+        record.has_warned_courant = true;
+        monitor.message(fmt::format("warning: step {}: Courant number {:.2f} > {:g}; "
+                                    "consider a smaller time.dt",
+                                    clock.step, report.courant, courant_warning));
+    }
+    record.max_courant = std::max(record.max_courant, report.courant);
+}
+
+} // namespace fddem
