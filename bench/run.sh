@@ -10,9 +10,16 @@
 #  4. with --paper: the paper's particle cases end to end (Fig. 5 disk in a box, Figs. 9-13
 #     eighteen disks, both at h = 1/64; the DKT benchmark): wall time, time per step, outer
 #     iterations per step, share of time in fluid, coupling and contact, largest overlap.
+#  5. with --steady: time to the steady state, side by side with OpenFOAM's simpleFoam on the
+#     cavities Re 100 and Re 1000 at 128² (the shipped case files: pseudo-time), plus fddem's
+#     time-marched variant (time.steady = false); R rounds, each running every timed row once in
+#     turn, so that every wall-time ratio is taken within a round (median over the rounds);
+#     then one iteratively tight reference run per code, against which each row's iteration
+#     error is measured. Prints steps, outer iterations, wall seconds, max |u - Ghia|,
+#     max |v - Ghia| and the ratios.
 # The kernel table includes contact detection (cell list vs brute force) for 1e3-1e5 disks.
-# Options: --openfoam [N] (default N = 256), --paper, --quick (smaller table), --threads T
-# (default 1).
+# Options: --openfoam [N] (default N = 256), --paper, --steady [R] (default R = 3 rounds),
+# --quick (smaller table), --threads T (default 1).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -20,6 +27,8 @@ cd "$root"
 openfoam=0
 openfoam_n=256
 paper=0
+steady=0
+steady_rounds=3
 quick=0
 threads=1
 while [ $# -gt 0 ]; do
@@ -27,6 +36,7 @@ while [ $# -gt 0 ]; do
         --openfoam) openfoam=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then openfoam_n="$2"; shift; fi ;;
         --quick) quick=1 ;;
         --paper) paper=1 ;;
+        --steady) steady=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then steady_rounds="$2"; shift; fi ;;
         --threads) threads="$2"; shift ;;
         *) echo "bench/run.sh: unknown option '$1'" >&2; exit 2 ;;
     esac
@@ -41,6 +51,17 @@ cmake --build --preset release --target fddem fddem_bench >/dev/null
 fddem="$root/build/release/app/fddem"
 out="$root/bench/results"
 mkdir -p "$out"
+
+# Installs Debian's openfoam if needed, copies the peer folder (shared/peers/openfoam-cavity) to a
+# fresh writable place under bench/results and prints its path.
+openfoam_peer() {
+    if ! command -v icoFoam >/dev/null; then
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq openfoam >/dev/null
+    fi
+    local peer="$out/openfoam-cavity"
+    rm -rf "$peer" && cp -r "$root/../shared/peers/openfoam-cavity" "$peer"
+    echo "$peer"
+}
 
 echo "== kernels (OMP_NUM_THREADS=$threads)"
 "$root/build/release/bench/fddem_bench" --benchmark_min_time=0.2 2>/dev/null |
@@ -57,8 +78,8 @@ for n in $grids; do
     dt=$($python -c "print(0.5/$n)")
     "$fddem" run cases/verification/cavity_re100/case.toml -o "$dir" --force -q \
         --set "domain.cells=[$n,$n]" --set "time.dt=$dt" --set "time.end=$end" \
-        --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" --set "simple.tolerance=1e-4" \
-        --set 'simple.fft_planning="measure"'
+        --set "time.steady=false" --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" \
+        --set "simple.tolerance=1e-4" --set 'simple.fft_planning="measure"'
     rows+=("$n:$dir")
 done
 $python "$here/table.py" cavity "${rows[@]}"
@@ -66,19 +87,15 @@ $python "$here/table.py" cavity "${rows[@]}"
 if [ "$openfoam" = 1 ]; then
     echo
     echo "== side by side with OpenFOAM icoFoam: cavity Re 100, ${openfoam_n}², dt = 0.5/N, t = 20"
-    if ! command -v icoFoam >/dev/null; then
-        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq openfoam >/dev/null
-    fi
-    peer="$out/openfoam-cavity"
-    rm -rf "$peer" && cp -r "$root/../shared/peers/openfoam-cavity" "$peer"
+    peer="$(openfoam_peer)"
     n="$openfoam_n"
     dt=$($python -c "print(0.5/$n)") # icoFoam's: endTime/ceil(endTime·N/0.5)
     dir="$out/cavity_fddem_n$n"
     start=$(date +%s.%N)
     "$fddem" run cases/verification/cavity_re100/case.toml -o "$dir" --force -q \
         --set "domain.cells=[$n,$n]" --set "time.dt=$dt" --set "time.end=20.0" \
-        --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" --set "simple.tolerance=1e-4" \
-        --set 'simple.fft_planning="measure"'
+        --set "time.steady=false" --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" \
+        --set "simple.tolerance=1e-4" --set 'simple.fft_planning="measure"'
     fddem_wall=$($python -c "import sys,time; print(f'{time.time()-float(sys.argv[1]):.2f}')" "$start")
     (cd "$peer" && OMP_NUM_THREADS=1 ./run.sh "$n" 100 20 icoFoam >/dev/null)
     $python "$here/table.py" openfoam "$dir" "$fddem_wall" "$peer/results" "$n" \
@@ -98,4 +115,45 @@ if [ "$paper" = 1 ]; then
         rows+=("$name:$dir")
     done
     $python "$here/table.py" paper "${rows[@]}"
+fi
+
+if [ "$steady" = 1 ]; then
+    echo
+    echo "== time to the steady state, side by side with OpenFOAM simpleFoam: cavity Re 100 and 1000,"
+    echo "   128², $steady_rounds round(s) (OMP_NUM_THREADS=$threads for fddem, one process each)"
+    peer="$(openfoam_peer)"
+    dir="$out/steady"
+    rm -rf "$dir" && mkdir -p "$dir"
+    echo "round,re,row,wall_s" >"$dir/walls.csv"
+    # One fddem run of the cavity at Reynolds number $2 into $dir/re$2_$3, its wall clock (the
+    # whole process: set-up, stepping, output) appended to walls.csv as round $1.
+    fddem_row() {
+        local round="$1" re="$2" row="$3"
+        shift 3
+        local start
+        start=$(date +%s.%N)
+        "$fddem" run "cases/verification/cavity_re$re/case.toml" -o "$dir/re${re}_$row" --force -q "$@" \
+            >"$dir/re${re}_$row.log" 2>&1
+        awk -v a="$start" -v b="$(date +%s.%N)" -v r="$round,$re,$row" 'BEGIN { printf "%s,%.3f\n", r, b - a }' \
+            >>"$dir/walls.csv"
+    }
+    # Timed rows, each round running every one once in turn: the shipped case (pseudo-time); the
+    # same with SIMPLE's per-step tolerance 1e-6 (its iteration error then matches simpleFoam's
+    # at residual 1e-6); the time-marched variant; simpleFoam (SIMPLEC, residuals 1e-6: the peer's
+    # default).
+    for round in $(seq 1 "$steady_rounds"); do
+        for re in 100 1000; do
+            fddem_row "$round" "$re" pseudo
+            fddem_row "$round" "$re" pseudo_simple1e-6 --set "simple.tolerance=1e-6"
+            fddem_row "$round" "$re" marched --set "time.steady=false"
+            (cd "$peer" && OMP_NUM_THREADS=1 ./run.sh 128 "$re" 20000 simpleFoam >/dev/null)
+        done
+    done
+    # The references for the iteration error, once: fddem's pseudo-time with every tolerance
+    # 1e3-1e4 times tighter, simpleFoam's residuals at 1e-9 (the peer's accuracy anchor).
+    for re in 100 1000; do
+        fddem_row 1 "$re" tight --set "simple.tolerance=1e-9" --set "time.steady_tolerance=1e-10"
+        (cd "$peer" && OMP_NUM_THREADS=1 TOL=1e-9 TAG=tol1e-9 ./run.sh 128 "$re" 40000 simpleFoam >/dev/null)
+    done
+    $python "$here/table.py" steady "$dir" "$peer/results" "$root/cases/verification"
 fi

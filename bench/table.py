@@ -4,7 +4,9 @@ import argparse
 import csv
 import json
 import os
+import statistics
 import sys
+import tomllib
 
 
 def read_solver_csv(run_dir):
@@ -103,40 +105,54 @@ def extrema_errors(y, u, x, v):
     return [abs(f - r) for f, r in zip(found, HIGH_RESOLUTION_RE100)]
 
 
-def openfoam_table(fddem_dir, fddem_wall, peer_results, n, reference_dir):
-    ghia_u = read_xy(os.path.join(reference_dir, "ghia1982_u_vertical_centerline.csv"))
-    ghia_v = read_xy(os.path.join(reference_dir, "ghia1982_v_horizontal_centerline.csv"))
-    with open(os.path.join(fddem_dir, "samples", "vertical_centerline.csv"), newline="") as f:
+def fddem_centrelines(run_dir):
+    """(y, u on x = 0.5, x, v on y = 0.5) from a cavity run's samples/*.csv."""
+    with open(os.path.join(run_dir, "samples", "vertical_centerline.csv"), newline="") as f:
         vertical = list(csv.DictReader(f))
-    with open(os.path.join(fddem_dir, "samples", "horizontal_centerline.csv"), newline="") as f:
+    with open(os.path.join(run_dir, "samples", "horizontal_centerline.csv"), newline="") as f:
         horizontal = list(csv.DictReader(f))
-    fddem_u = max_deviation(
-        [float(r["y"]) for r in vertical], [float(r["u"]) for r in vertical], ghia_u
-    )
-    fddem_v = max_deviation(
-        [float(r["x"]) for r in horizontal], [float(r["v"]) for r in horizontal], ghia_v
-    )
-    name = f"icoFoam_N{n}_Re100_T20"
-    of_u_rows = read_xy(os.path.join(peer_results, f"{name}_u.csv"))
-    of_v_rows = read_xy(os.path.join(peer_results, f"{name}_v.csv"))
-    of_u = max_deviation([r[0] for r in of_u_rows], [r[1] for r in of_u_rows], ghia_u)
-    of_v = max_deviation([r[0] for r in of_v_rows], [r[1] for r in of_v_rows], ghia_v)
-    of_wall = None
-    with open(os.path.join(peer_results, "runs.csv"), newline="") as f:
-        for row in csv.DictReader(f):
-            if row["name"] == name:
-                of_wall = float(row["wall_s"])
-    steps = len(read_solver_csv(fddem_dir))
-    fddem_ext = extrema_errors(
+    return (
         [float(r["y"]) for r in vertical],
         [float(r["u"]) for r in vertical],
         [float(r["x"]) for r in horizontal],
         [float(r["v"]) for r in horizontal],
     )
-    of_ext = extrema_errors(
-        [r[0] for r in of_u_rows], [r[1] for r in of_u_rows],
-        [r[0] for r in of_v_rows], [r[1] for r in of_v_rows],
-    )
+
+
+def openfoam_centrelines(peer_results, name):
+    """(y, u on x = 0.5, x, v on y = 0.5) of one peer run, results/<name>_{u,v}.csv."""
+    u_rows = read_xy(os.path.join(peer_results, f"{name}_u.csv"))
+    v_rows = read_xy(os.path.join(peer_results, f"{name}_v.csv"))
+    return [r[0] for r in u_rows], [r[1] for r in u_rows], [r[0] for r in v_rows], [r[1] for r in v_rows]
+
+
+def ghia_deviations(centrelines, reference_dir):
+    """max |u - Ghia| on x = 0.5 and max |v - Ghia| on y = 0.5 (linear interpolation)."""
+    y, u, x, v = centrelines
+    ghia_u = read_xy(os.path.join(reference_dir, "ghia1982_u_vertical_centerline.csv"))
+    ghia_v = read_xy(os.path.join(reference_dir, "ghia1982_v_horizontal_centerline.csv"))
+    return max_deviation(y, u, ghia_u), max_deviation(x, v, ghia_v)
+
+
+def read_peer_runs(peer_results):
+    """The peer's results/runs.csv, in the order the runs were made."""
+    with open(os.path.join(peer_results, "runs.csv"), newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def openfoam_table(fddem_dir, fddem_wall, peer_results, n, reference_dir):
+    fddem_lines = fddem_centrelines(fddem_dir)
+    fddem_u, fddem_v = ghia_deviations(fddem_lines, reference_dir)
+    name = f"icoFoam_N{n}_Re100_T20"
+    of_lines = openfoam_centrelines(peer_results, name)
+    of_u, of_v = ghia_deviations(of_lines, reference_dir)
+    of_wall = None
+    for row in read_peer_runs(peer_results):
+        if row["name"] == name:
+            of_wall = float(row["wall_s"])
+    steps = len(read_solver_csv(fddem_dir))
+    fddem_ext = extrema_errors(*fddem_lines)
+    of_ext = extrema_errors(*of_lines)
     print(
         f"{'code':>8} {'wall s':>8} {'steps':>6} {'max|u-Ghia|':>12} {'max|v-Ghia|':>12} "
         f"{'|du_min|':>9} {'|dv_max|':>9} {'|dv_min|':>9}"
@@ -156,25 +172,113 @@ def openfoam_table(fddem_dir, fddem_wall, peer_results, n, reference_dir):
 
 def ghia_table(run_dir, reference_dir):
     """Centreline deviations of one cavity run from Ghia et al. and, for Re 100, the extrema."""
-    ghia_u = read_xy(os.path.join(reference_dir, "ghia1982_u_vertical_centerline.csv"))
-    ghia_v = read_xy(os.path.join(reference_dir, "ghia1982_v_horizontal_centerline.csv"))
-    with open(os.path.join(run_dir, "samples", "vertical_centerline.csv"), newline="") as f:
-        vertical = list(csv.DictReader(f))
-    with open(os.path.join(run_dir, "samples", "horizontal_centerline.csv"), newline="") as f:
-        horizontal = list(csv.DictReader(f))
-    y = [float(r["y"]) for r in vertical]
-    u = [float(r["u"]) for r in vertical]
-    x = [float(r["x"]) for r in horizontal]
-    v = [float(r["v"]) for r in horizontal]
-    print(f"{run_dir}: max|u - Ghia| = {max_deviation(y, u, ghia_u):.5f}, "
-          f"max|v - Ghia| = {max_deviation(x, v, ghia_v):.5f}")
+    y, u, x, v = fddem_centrelines(run_dir)
+    du, dv = ghia_deviations((y, u, x, v), reference_dir)
+    print(f"{run_dir}: max|u - Ghia| = {du:.5f}, max|v - Ghia| = {dv:.5f}")
     print(f"  extrema: u_min {extremum(y, u, -1):.6f}, v_max {extremum(x, v, 1):.6f}, "
           f"v_min {extremum(x, v, -1):.6f}")
 
 
+# The rows of the --steady table (bench/run.sh writes them): fddem's run directories
+# re<Re>_<row>, simpleFoam's peer runs by name; the last of each code is its reference.
+FDDEM_STEADY_ROWS = (
+    ("pseudo", "pseudo-time (shipped case)"),
+    ("pseudo_simple1e-6", "pseudo-time, simple.tolerance 1e-6"),
+    ("marched", "time-marched, dt = h"),
+    ("tight", "pseudo-time, tolerances 1e-9/1e-10 (ref)"),
+)
+OPENFOAM_STEADY_ROWS = (
+    ("simplec", "SIMPLEC, residuals 1e-6"),
+    ("simplec_tol1e-9", "SIMPLEC, residuals 1e-9 (ref)"),
+)
+# Ratios within a round: (numerator, denominator), each (code, row).
+STEADY_RATIOS = (
+    (("simpleFoam", "simplec"), ("fddem", "pseudo")),
+    (("simpleFoam", "simplec"), ("fddem", "pseudo_simple1e-6")),
+    (("fddem", "marched"), ("fddem", "pseudo")),
+)
+
+
+def max_difference(a, b):
+    """Largest |a - b| over both centrelines of two runs of one code on one grid."""
+    return max(max(abs(p - q) for p, q in zip(a[k], b[k])) for k in (1, 3))
+
+
+def steady_rows(steady_dir, peer_results, cases_dir, re):
+    """One dict per row of the --steady table for one Reynolds number."""
+    reference_dir = os.path.join(cases_dir, f"cavity_re{re}", "reference")
+    walls = {}
+    with open(os.path.join(steady_dir, "walls.csv"), newline="") as f:
+        for r in csv.DictReader(f):
+            if int(r["re"]) == re:
+                walls.setdefault(("fddem", r["row"]), []).append(float(r["wall_s"]))
+    rows = []
+    for row, mode in FDDEM_STEADY_ROWS:
+        run_dir = os.path.join(steady_dir, f"re{re}_{row}")
+        summary = read_summary(run_dir)
+        with open(os.path.join(run_dir, "case.toml"), "rb") as f:
+            tolerance = tomllib.load(f)["time"]["steady_tolerance"]
+        rows.append(dict(code="fddem", row=row, mode=mode, steps=summary["steps"],
+                         outer=summary["total_outer_iterations"],
+                         reached=summary["last_rate_of_change"] < tolerance,
+                         walls=walls[("fddem", row)], lines=fddem_centrelines(run_dir)))
+    peer_runs = read_peer_runs(peer_results)
+    for row, mode in OPENFOAM_STEADY_ROWS:
+        name = f"simpleFoam_N128_Re{re}_{row}"
+        runs = [r for r in peer_runs if r["name"] == name]
+        rows.append(dict(code="simpleFoam", row=row, mode=mode, steps=int(runs[-1]["steps"]),
+                         outer=int(runs[-1]["steps"]),
+                         reached=all(r["converged"] == "converged" for r in runs),
+                         walls=[float(r["wall_s"]) for r in runs],
+                         lines=openfoam_centrelines(peer_results, name)))
+    for code in ("fddem", "simpleFoam"):
+        reference = [r for r in rows if r["code"] == code][-1]["lines"]
+        for r in rows:
+            if r["code"] == code:
+                r["iteration_error"] = max_difference(r["lines"], reference)
+    for r in rows:
+        r["ghia"] = ghia_deviations(r["lines"], reference_dir)
+    return rows
+
+
+def steady_table(steady_dir, peer_results, cases_dir):
+    """Time to the steady state: fddem (pseudo-time and time-marched) against simpleFoam."""
+    print(
+        f"{'Re':>5} {'code':<10} {'mode':<42} {'steps':>6} {'outer it':>8} {'wall s':>7} "
+        f"{'(min-max)':>13} {'max|u-Ghia|':>11} {'max|v-Ghia|':>11} {'iter. error':>11}"
+    )
+    ratios = []
+    for re in (100, 1000):
+        rows = steady_rows(steady_dir, peer_results, cases_dir, re)
+        for r in rows:
+            walls = r["walls"]
+            spread = f"({min(walls):.2f}-{max(walls):.2f})" if len(walls) > 1 else "(1 run)"
+            flag = "" if r["reached"] else " NOT STEADY"
+            error = "ref" if r["iteration_error"] == 0.0 else f"{r['iteration_error']:.1e}"
+            print(
+                f"{re:>5} {r['code']:<10} {r['mode']:<42} {r['steps']:>6} {r['outer']:>8} "
+                f"{statistics.median(walls):>7.2f} {spread:>13} {r['ghia'][0]:>11.5f} "
+                f"{r['ghia'][1]:>11.5f} {error:>11}{flag}"
+            )
+        by_key = {(r["code"], r["row"]): r for r in rows}
+        for numerator, denominator in STEADY_RATIOS:
+            a, b = by_key[numerator]["walls"], by_key[denominator]["walls"]
+            paired = [x / y for x, y in zip(a, b)]
+            ratios.append(
+                f"Re {re:>4}: {numerator[0]} {by_key[numerator]['mode']} / {denominator[0]} "
+                f"{by_key[denominator]['mode']}: {statistics.median(paired):.2f} "
+                f"(rounds: {', '.join(f'{p:.2f}' for p in paired)})"
+            )
+    print("wall s: median over the rounds (fddem: the whole process; simpleFoam: the solver command,")
+    print("  as the peer times it). iter. error: max |Δu|, |Δv| on the centrelines from the same code's")
+    print("  reference row (ref) on the same grid. Ratios: median of the ratios within each round.")
+    for line in ratios:
+        print(line)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("mode", choices=["cavity", "openfoam", "ghia", "paper"])
+    parser.add_argument("mode", choices=["cavity", "openfoam", "ghia", "paper", "steady"])
     parser.add_argument("args", nargs="+")
     options = parser.parse_args()
     if options.mode == "cavity":
@@ -183,6 +287,8 @@ def main():
         ghia_table(*options.args)
     elif options.mode == "paper":
         paper_table(options.args)
+    elif options.mode == "steady":
+        steady_table(*options.args)
     else:
         openfoam_table(*options.args)
     return 0
