@@ -6,48 +6,97 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace fddem {
+namespace {
 
+constexpr double pi = std::numbers::pi;
+
+/// The volume (2D: area) of the ball of radius r.
 template <int Dim>
-MarkerSet<Dim> make_ball_markers(const Ball<Dim>& ball, int n_rings)
+double ball_volume(double r)
+{
+    if constexpr (Dim == 2) {
+        return pi * r * r;
+    } else {
+        return 4.0 / 3.0 * pi * r * r * r;
+    }
+}
+
+/// The volume between the spheres (circles) of radii (i − ½) h and (i + ½) h, in the form the
+/// paper's layout has always used (kept for its bits).
+template <int Dim>
+double middle_shell(int i, double h)
+{
+    if constexpr (Dim == 2) {
+        return pi * h * h * ((i + 0.5) * (i + 0.5) - (i - 0.5) * (i - 0.5));
+    } else {
+        return 4.0 / 3.0 * pi * h * h * h * (std::pow(i + 0.5, 3) - std::pow(i - 0.5, 3));
+    }
+}
+
+/// The `count` unit directions of ring (shell) i: 6i evenly spaced angles in 2D, round(4π i²)
+/// points of a golden-angle spiral in 3D.
+template <int Dim>
+void add_ring(MarkerSet<Dim>& set, int i, double h, double shell_volume)
+{
+    if constexpr (Dim == 2) {
+        const int count = 6 * i;
+        for (int k = 0; k < count; ++k) {
+            const double phi = 2.0 * pi * k / count;
+            set.offsets.push_back(Vec<2>(i * h * std::cos(phi), i * h * std::sin(phi)));
+            set.volumes.push_back(shell_volume / count);
+        }
+    } else {
+        const double golden = pi * (3.0 - std::sqrt(5.0));
+        const int count = std::max(1, static_cast<int>(std::lround(4.0 * pi * i * i)));
+        for (int k = 0; k < count; ++k) {
+            const double z = 1.0 - (2.0 * k + 1.0) / count;
+            const double r = std::sqrt(1.0 - z * z);
+            const double phi = golden * k;
+            set.offsets.push_back(i * h * Vec<3>(r * std::cos(phi), r * std::sin(phi), z));
+            set.volumes.push_back(shell_volume / count);
+        }
+    }
+}
+
+/// The centre marker and rings 1..n at spacing h, ring i owning ((i − ½) h, (i + ½) h); the last
+/// ring's share reaches out to `outer_edge` when it is given (else to (n + ½) h).
+template <int Dim>
+MarkerSet<Dim> ring_markers(int n_rings, double h, std::optional<double> outer_edge)
 {
     if (n_rings < 1) {
         throw InternalError("make_ball_markers: at least one ring");
     }
-    constexpr double pi = std::numbers::pi;
     MarkerSet<Dim> set;
-    const double h = ball.radius() / (n_rings + 0.5);
     set.spacing = h;
     set.offsets.push_back(Vec<Dim>::Zero());
-    if constexpr (Dim == 2) {
-        set.volumes.push_back(pi * 0.25 * h * h);
-        for (int i = 1; i <= n_rings; ++i) {
-            const int count = 6 * i;
-            const double annulus = pi * h * h * ((i + 0.5) * (i + 0.5) - (i - 0.5) * (i - 0.5));
-            for (int k = 0; k < count; ++k) {
-                const double phi = 2.0 * pi * k / count;
-                set.offsets.push_back(Vec<2>(i * h * std::cos(phi), i * h * std::sin(phi)));
-                set.volumes.push_back(annulus / count);
-            }
-        }
-    } else {
-        set.volumes.push_back(4.0 / 3.0 * pi * std::pow(0.5 * h, 3));
-        const double golden = pi * (3.0 - std::sqrt(5.0));
-        for (int i = 1; i <= n_rings; ++i) {
-            const int count = std::max(1, static_cast<int>(std::lround(4.0 * pi * i * i)));
-            const double shell =
-                4.0 / 3.0 * pi * h * h * h * (std::pow(i + 0.5, 3) - std::pow(i - 0.5, 3));
-            for (int k = 0; k < count; ++k) {
-                const double z = 1.0 - (2.0 * k + 1.0) / count;
-                const double r = std::sqrt(1.0 - z * z);
-                const double phi = golden * k;
-                set.offsets.push_back(i * h * Vec<3>(r * std::cos(phi), r * std::sin(phi), z));
-                set.volumes.push_back(shell / count);
-            }
-        }
+    set.volumes.push_back(ball_volume<Dim>(0.5 * h));
+    for (int i = 1; i <= n_rings; ++i) {
+        const double shell = i == n_rings && outer_edge
+                                 ? ball_volume<Dim>(*outer_edge) - ball_volume<Dim>((i - 0.5) * h)
+                                 : middle_shell<Dim>(i, h);
+        add_ring<Dim>(set, i, h, shell);
     }
     return set;
+}
+
+} // namespace
+
+template <int Dim>
+MarkerSet<Dim> make_ball_markers(const Ball<Dim>& ball, int n_rings)
+{
+    return ring_markers<Dim>(n_rings, ball.radius() / (n_rings + 0.5), std::nullopt);
+}
+
+template <int Dim>
+MarkerSet<Dim> make_retracted_ball_markers(const Ball<Dim>& ball, int n_rings, double retraction)
+{
+    if (!(retraction >= 0.0 && retraction < ball.radius())) {
+        throw InternalError("make_retracted_ball_markers: retraction outside [0, R)");
+    }
+    return ring_markers<Dim>(n_rings, (ball.radius() - retraction) / n_rings, ball.radius());
 }
 
 int rings_for_spacing(double radius, double grid_spacing, double ratio)
@@ -55,7 +104,15 @@ int rings_for_spacing(double radius, double grid_spacing, double ratio)
     return std::max(1, static_cast<int>(std::lround(radius / (ratio * grid_spacing) - 0.5)));
 }
 
+int retracted_rings_for_spacing(double radius, double retraction, double grid_spacing, double ratio)
+{
+    return std::max(1,
+                    static_cast<int>(std::lround((radius - retraction) / (ratio * grid_spacing))));
+}
+
 template MarkerSet<2> make_ball_markers<2>(const Ball<2>&, int);
 template MarkerSet<3> make_ball_markers<3>(const Ball<3>&, int);
+template MarkerSet<2> make_retracted_ball_markers<2>(const Ball<2>&, int, double);
+template MarkerSet<3> make_retracted_ball_markers<3>(const Ball<3>&, int, double);
 
 } // namespace fddem

@@ -18,11 +18,28 @@
 
 namespace fddem {
 
-/// Markers for a ball with `n_rings` rings (2D) or shells (3D); n_rings ≥ 1.
+/// Markers for a ball with `n_rings` rings (2D) or shells (3D); n_rings ≥ 1: the paper's
+/// layout above.
 template <int Dim>
 [[nodiscard]] MarkerSet<Dim> make_ball_markers(const Ball<Dim>& ball, int n_rings);
 
+/// Markers for a ball whose outermost ring (shell) lies `retraction` inside the surface
+/// (issue 13; `coupling.marker_retraction`): ring i at radius i h_L, h_L = (R − retraction)/N_a,
+/// ring i < N_a owning the annulus ((i − ½) h_L, (i + ½) h_L) and ring N_a the rest of the ball
+/// out to R, so that Σ ΔV_l is still the ball's volume. The paper's layout puts the last ring
+/// h_L/2 inside (retraction ≈ 0.7 h at h_L = 1.4 h), where the diffuse forcing makes the body
+/// hydrodynamically smaller than it is (docs/method.md §4); a surface layer of markers retracted
+/// by a fraction of h is the immersed-boundary practice (Breugem 2012, J. Comput. Phys. 231).
+/// 0 ≤ retraction < R.
+template <int Dim>
+[[nodiscard]] MarkerSet<Dim> make_retracted_ball_markers(const Ball<Dim>& ball, int n_rings,
+                                                         double retraction);
+
 /// N_a for a target marker spacing h_L ≈ ratio · h: round(R / (ratio h) − ½), at least 1.
 [[nodiscard]] int rings_for_spacing(double radius, double grid_spacing, double ratio);
+
+/// N_a for the retracted layout: round((R − retraction) / (ratio h)), at least 1.
+[[nodiscard]] int retracted_rings_for_spacing(double radius, double retraction, double grid_spacing,
+                                              double ratio);
 
 } // namespace fddem

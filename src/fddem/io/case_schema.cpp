@@ -232,6 +232,12 @@ std::vector<KeySpec> case_schema()
                                  "this end a step's outer iterations."),
                              0.0, 1.0, true, true),
                       &CaseConfig::simple, &SimpleConfig::tolerance));
+    s.push_back(bound(key("simple", "converge_fluid_with_bodies", T::boolean, none, "false",
+                          "With bodies, end a step only when the fluid's mass and momentum "
+                          "residuals are below simple.tolerance as well as the bodies' change "
+                          "(false: the bodies' change alone, as the paper's cases run; "
+                          "docs/method.md §4)."),
+                      &CaseConfig::simple, &SimpleConfig::is_fluid_converged_with_bodies));
     s.push_back(bound(ranged(key("simple", "max_outer_iterations", T::integer, none, "50",
                                  "Outer iterations per step at most (a step that reaches it is "
                                  "reported as not converged)."),
@@ -342,6 +348,19 @@ std::vector<KeySpec> case_schema()
                          "recommends about 1.45)."),
                      0.5, 10.0, false, false),
               &CaseConfig::coupling, &CouplingConfig::marker_spacing_ratio));
+    s.push_back(bound(
+        ranged(key("coupling", "marker_retraction", T::real, none, "none",
+                   "Puts the outermost marker ring this many grid spacings h inside the body's "
+                   "surface, the rings evenly spaced inside it (issue 13, docs/method.md §4); "
+                   "unset: the paper's layout, the last ring h_L/2 inside the surface."),
+               0.0, 2.0, false, false),
+        &CaseConfig::coupling, &CouplingConfig::marker_retraction));
+    s.push_back(bound(key("coupling", "force_before_projection", T::boolean, none, "false",
+                          "Apply the marker force of eqs. (15)–(16) to the momentum solve's u* "
+                          "and then correct the pressure, so that every outer iteration ends "
+                          "divergence-free (Uhlmann 2005); false: after the pressure correction, "
+                          "as the paper (docs/method.md §4)."),
+                      &CaseConfig::coupling, &CouplingConfig::is_forcing_before_projection));
 
     s.push_back(bound(key("contact", "model", T::string, none, "\"linear\"",
                           "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "

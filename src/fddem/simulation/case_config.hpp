@@ -83,6 +83,9 @@ struct TimeConfig {
 /// [simple]
 struct SimpleConfig {
     double tolerance = 1e-5; ///< normalised mass and momentum residuals
+    /// With bodies, also require the fluid's residuals (not only the bodies' change) below
+    /// `tolerance` to end a step (issue 13; docs/method.md §4)
+    bool is_fluid_converged_with_bodies = false;
     int max_outer_iterations = 50;
     double velocity_relaxation = 1.0;
     double pressure_relaxation = 1.0;
@@ -116,6 +119,12 @@ struct BodyConfig {
 struct CouplingConfig {
     KernelKind kernel = KernelKind::hat; ///< the discrete delta function
     double marker_spacing_ratio = 1.4;   ///< h_L / h when n_rings is not given
+    /// The outermost ring this many grid spacings h inside the surface (unset: the paper's
+    /// layout, the last ring h_L/2 inside)
+    std::optional<double> marker_retraction;
+    /// Eqs. (15)–(16) between the momentum solve and the pressure correction, so that each
+    /// outer iteration ends divergence-free (Uhlmann 2005), not after the correction (the paper)
+    bool is_forcing_before_projection = false;
 };
 
 /// What the reader derives for the DEM collision model (eq. (18)) from [contact] and the bodies.

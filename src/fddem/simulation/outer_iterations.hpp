@@ -110,6 +110,8 @@ private:
     const FluidProperties& properties_;
     const AnyKernel& kernel_;
     double tolerance_;
+    bool is_fluid_converged_with_bodies_;
+    bool is_forcing_before_projection_;
     int max_iterations_;
     double pressure_relaxation_;
     PressureUpdate pressure_update_;

@@ -66,6 +66,30 @@ Vec<Dim> vector_of(const std::vector<double>& values)
     return v;
 }
 
+/// The markers of a ball: the paper's layout, or the outer ring `coupling.marker_retraction` h
+/// inside the surface; N_a from bodies.n_rings, else from coupling.marker_spacing_ratio.
+template <int Dim>
+MarkerSet<Dim> body_markers(const Ball<Dim>& ball, int n_rings, const CaseConfig& config, double h)
+{
+    const CouplingConfig& coupling = config.coupling;
+    const double ratio = coupling.marker_spacing_ratio;
+    if (!coupling.marker_retraction) {
+        return make_ball_markers(ball, n_rings > 0 ? n_rings
+                                                   : rings_for_spacing(ball.radius(), h, ratio));
+    }
+    const double retraction = *coupling.marker_retraction * h;
+    if (retraction >= 0.5 * ball.radius()) {
+        throw InputError(config.source_file, 0, "coupling.marker_retraction",
+                         "retracts the markers by " + std::to_string(retraction) +
+                             ", not less than half the radius " + std::to_string(ball.radius()) +
+                             " of a body: refine the grid or lower the retraction");
+    }
+    return make_retracted_ball_markers(
+        ball,
+        n_rings > 0 ? n_rings : retracted_rings_for_spacing(ball.radius(), retraction, h, ratio),
+        retraction);
+}
+
 template <int Dim>
 Particles<Dim> make_particles(const CaseConfig& config, const MacGrid<Dim>& grid)
 {
@@ -85,11 +109,8 @@ Particles<Dim> make_particles(const CaseConfig& config, const MacGrid<Dim>& grid
         if constexpr (Dim == 2) {
             body.omega = body.motion == Motion::fixed ? 0.0 : b.omega;
         }
-        const int n_rings = b.n_rings > 0
-                                ? b.n_rings
-                                : rings_for_spacing(body.radius(), grid.spacing().maxCoeff(),
-                                                    config.coupling.marker_spacing_ratio);
-        body.coupling = MarkerCoupling<Dim>(make_ball_markers(body.shape, n_rings));
+        body.coupling = MarkerCoupling<Dim>(
+            body_markers(body.shape, b.n_rings, config, grid.spacing().maxCoeff()));
         bodies.add(std::move(body));
     }
     return bodies;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <type_traits>
 
 namespace fddem {
@@ -38,6 +39,42 @@ TYPED_TEST(Markers, VolumesSumToTheBodyAndTheCentroidIsTheCentre)
         EXPECT_LT(relative, 1.0);
         EXPECT_GT(relative, 1.0 - 0.8 / ((n_rings + 0.5) * (n_rings + 0.5))) << n_rings;
     }
+}
+
+TYPED_TEST(Markers, RetractedLayoutKeepsTheVolumeAndPutsTheLastRingInsideBy)
+{
+    constexpr int Dim = TypeParam::value;
+    const Ball<Dim> ball{1.0}; // D = 1
+    const double h = 1.0 / 32; // R = 16 h
+    for (const double retraction : {0.0, 0.3 * h, 0.7 * h}) {
+        const int n_rings = retracted_rings_for_spacing(ball.radius(), retraction, h, 2.0);
+        const MarkerSet<Dim> set = make_retracted_ball_markers(ball, n_rings, retraction);
+        double volume = 0.0;
+        double outermost = 0.0;
+        for (std::size_t l = 0; l < set.size(); ++l) {
+            volume += set.volumes[l];
+            outermost = std::max(outermost, set.offsets[l].norm());
+        }
+        EXPECT_NEAR(volume / ball.volume(), 1.0, 1e-13);
+        EXPECT_NEAR(outermost, ball.radius() - retraction, 1e-14);
+        // (R − r)/(2 h) = 8, 7.85, 7.65 → 8 rings of spacing ≈ 2 h.
+        EXPECT_EQ(n_rings, 8);
+        EXPECT_NEAR(set.spacing, (ball.radius() - retraction) / 8, 1e-15);
+        // The second moment: the last ring stands for the band out to R at the band's inner
+        // part (or its outer edge, without retraction): within a ring spacing's share of R².
+        EXPECT_NEAR(set.second_moment() / ball.second_moment(), 1.0,
+                    2.0 * set.spacing / ball.radius());
+    }
+}
+
+TEST(Markers, RetractedLayoutWithoutRetractionIsNotThePapers)
+{
+    // The paper's layout keeps its last ring h_L/2 inside; retraction 0 puts it on the surface.
+    const auto paper = make_ball_markers(Ball<2>{2.0}, 6); // R = 1
+    const auto surface = make_retracted_ball_markers(Ball<2>{2.0}, 6, 0.0);
+    EXPECT_NEAR(paper.offsets.back().norm(), 6.0 / 6.5, 1e-15);
+    EXPECT_NEAR(surface.offsets.back().norm(), 1.0, 1e-15);
+    EXPECT_EQ(paper.size(), surface.size());
 }
 
 TEST(Markers, DiskHasTheLayoutOfPaperFigure1)
