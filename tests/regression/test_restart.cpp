@@ -65,6 +65,8 @@ velocity = [-2.0, 0.0]
 n_rings = 3
 [contact]
 restitution = 0.5
+[coupling]
+markers = "paper"   # the layout the contacts at steps 10 and 40 were timed with
 [time]
 dt = 0.01
 end = 0.6

@@ -37,7 +37,7 @@ periodic = [true, false]
 density = 1.0
 viscosity = 0.1
 gravity = [0.0, -980.0]
-)" + bodies + "[time]\ndt = 0.005\nend = " +
+)" + bodies + "[coupling]\nmarkers = \"paper\"\n[time]\ndt = 0.005\nend = " +
                                         std::to_string(end) + "\n[simple]\ntolerance = 1e-4\n",
                                     "test:bodies across the seam");
     for (BodyConfig& body : c.bodies) {

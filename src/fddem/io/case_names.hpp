@@ -79,6 +79,11 @@ constexpr auto case_names(KernelKind /*tag*/)
     return std::to_array<EnumName<KernelKind>>(
         {{hat, "hat"}, {roma3, "roma3"}, {peskin4, "peskin4"}});
 }
+constexpr auto case_names(MarkerLayout /*tag*/)
+{
+    using enum MarkerLayout;
+    return std::to_array<EnumName<MarkerLayout>>({{paper, "paper"}, {retracted, "retracted"}});
+}
 constexpr auto case_names(ContactCoupling /*tag*/)
 {
     using enum ContactCoupling;

@@ -348,13 +348,19 @@ std::vector<KeySpec> case_schema()
                          "recommends about 1.45)."),
                      0.5, 10.0, false, false),
               &CaseConfig::coupling, &CouplingConfig::marker_spacing_ratio));
-    s.push_back(bound(
-        ranged(key("coupling", "marker_retraction", T::real, none, "none",
-                   "Puts the outermost marker ring this many grid spacings h inside the body's "
-                   "surface, the rings evenly spaced inside it (issue 13, docs/method.md §4); "
-                   "unset: the paper's layout, the last ring h_L/2 inside the surface."),
-               0.0, 2.0, false, false),
-        &CaseConfig::coupling, &CouplingConfig::marker_retraction));
+    s.push_back(bound(key("coupling", "markers", T::string, none, "\"paper\"",
+                          "Marker layout: paper (the last ring half a ring spacing inside the "
+                          "surface: the body hydrodynamically smaller by about 0.4 h) or "
+                          "retracted (the outermost ring coupling.marker_retraction h inside the "
+                          "surface, the rings evenly spaced inside it: drag and settling within "
+                          "about 1 % at D/16–D/20, but light bodies accelerate too slowly; "
+                          "docs/method.md §4)."),
+                      &CaseConfig::coupling, &CouplingConfig::markers));
+    s.push_back(bound(ranged(key("coupling", "marker_retraction", T::real, none, "0.3",
+                                 "With markers = \"retracted\": how far inside the surface the "
+                                 "outermost ring lies, in grid spacings h (0.3: Breugem 2012)."),
+                             0.0, 2.0, false, false),
+                      &CaseConfig::coupling, &CouplingConfig::marker_retraction));
     s.push_back(bound(key("coupling", "force_before_projection", T::boolean, none, "false",
                           "Apply the marker force of eqs. (15)–(16) to the momentum solve's u* "
                           "and then correct the pressure, so that every outer iteration ends "

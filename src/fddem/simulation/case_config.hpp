@@ -115,13 +115,17 @@ struct BodyConfig {
     Material material; ///< its surface: `surface`, else [contact]'s (derived)
 };
 
+/// How the marker rings fill a body (coupling.markers).
+enum class MarkerLayout { paper, retracted };
+
 /// [coupling]
 struct CouplingConfig {
     KernelKind kernel = KernelKind::hat; ///< the discrete delta function
     double marker_spacing_ratio = 1.4;   ///< h_L / h when n_rings is not given
-    /// The outermost ring this many grid spacings h inside the surface (unset: the paper's
-    /// layout, the last ring h_L/2 inside)
-    std::optional<double> marker_retraction;
+    /// Where the marker rings go: the paper's layout (the last ring h_L/2 inside the surface) or
+    /// the outermost ring `marker_retraction` h inside it (issue 13; docs/method.md §4)
+    MarkerLayout markers = MarkerLayout::paper;
+    double marker_retraction = 0.3; ///< in grid spacings h (Breugem 2012)
     /// Eqs. (15)–(16) between the momentum solve and the pressure correction, so that each
     /// outer iteration ends divergence-free (Uhlmann 2005), not after the correction (the paper)
     bool is_forcing_before_projection = false;

@@ -73,11 +73,11 @@ MarkerSet<Dim> body_markers(const Ball<Dim>& ball, int n_rings, const CaseConfig
 {
     const CouplingConfig& coupling = config.coupling;
     const double ratio = coupling.marker_spacing_ratio;
-    if (!coupling.marker_retraction) {
+    if (coupling.markers == MarkerLayout::paper) {
         return make_ball_markers(ball, n_rings > 0 ? n_rings
                                                    : rings_for_spacing(ball.radius(), h, ratio));
     }
-    const double retraction = *coupling.marker_retraction * h;
+    const double retraction = coupling.marker_retraction * h;
     if (retraction >= 0.5 * ball.radius()) {
         throw InputError(config.source_file, 0, "coupling.marker_retraction",
                          "retracts the markers by " + std::to_string(retraction) +
