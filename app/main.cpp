@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "commands.hpp"
 
@@ -32,6 +33,20 @@ public:
     MpiSession& operator=(MpiSession&&) = delete;
     ~MpiSession() { fddem::finish_mpi(); }
 };
+
+/// "unknown subcommand 'bogus' …" when the first argument is a word that names no subcommand
+/// (`fddem bogus`, which CLI11 reports only as "A subcommand is required"); "" otherwise.
+std::string unknown_subcommand(const CLI::App& app, int argc, char** argv)
+{
+    if (argc < 2 || argv[1][0] == '-' || !app.get_subcommands().empty()) {
+        return "";
+    }
+    std::string names;
+    for (const CLI::App* command : app.get_subcommands({})) {
+        names += (names.empty() ? "" : ", ") + command->get_name();
+    }
+    return "unknown subcommand '" + std::string(argv[1]) + "' (the subcommands are " + names + ")";
+}
 
 } // namespace
 
@@ -90,7 +105,9 @@ int main(int argc, char** argv)
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "fddem: command line: %s (see fddem --help)\n", e.what());
+        const std::string unknown = unknown_subcommand(app, argc, argv);
+        std::fprintf(stderr, "fddem: command line: %s (see fddem --help)\n",
+                     unknown.empty() ? e.what() : unknown.c_str());
         return exit_bad_input;
     }
     if (*run_cmd && run.case_file.empty() && run.restart_directory.empty()) {
