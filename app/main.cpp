@@ -13,6 +13,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 
 namespace {
 
@@ -53,6 +54,7 @@ std::string unknown_subcommand(const CLI::App& app, int argc, char** argv)
 int main(int argc, char** argv)
 {
     using namespace fddem::app;
+    ignore_broken_pipes();
     MpiSession mpi(&argc, &argv);
 
     CLI::App app{"fddem: rigid particles in viscous incompressible fluid (FD-DEM, Wu & Yuan 2015)"};

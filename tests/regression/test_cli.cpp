@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <vector>
 
+#include "support/case_builders.hpp"
 #include "support/files_and_programs.hpp"
 
 namespace {
@@ -36,25 +37,7 @@ protected:
     {
         root_ = fddem::test::fresh_test_directory("fddem_cli_test_");
         case_file_ = root_ / "cavity.toml";
-        std::ofstream(case_file_) << R"([domain]
-size = [1.0, 1.0]
-cells = [16, 16]
-[walls]
-y_high = [1.0, 0.0]
-[fluid]
-density = 1.0
-viscosity = 0.01
-[time]
-dt = 0.0625
-end = 0.5
-[output]
-field_interval = 0.25
-[[output.lines]]
-name = "vertical_centerline"
-from = [0.5, 0.0]
-to = [0.5, 1.0]
-points = 17
-)";
+        std::ofstream(case_file_) << fddem::test::small_cavity_case;
     }
     void TearDown() override { fs::remove_all(root_); }
 
@@ -234,7 +217,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"end_between_steps", "--set time.end=0.55",
                "time.end: 0.55 s is not a whole number of time steps of 0.0625 s"},
         BadRun{"too_many_steps", "--set time.dt=1e-12 --set time.end=1",
-               "more than time.max_steps = 100000000"}),
+               "more than time.max_steps = 100000000"},
+        BadRun{"grid_beyond_the_machine", "--set domain.cells=[100000,100000]",
+               "domain.cells: a grid of 100000 × 100000 cells needs about 7.92e+03 GiB "
+               "(estimate), more than the memory of this machine"},
+        BadRun{"grid_beyond_max_memory", "--set run.max_memory=1e6",
+               "domain.cells: a grid of 16 × 16 cells needs about 48.2 MiB (estimate), more "
+               "than run.max_memory = 1e+06 B (0.954 MiB); use fewer cells"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST_F(Cli, MissingCaseFileIsBadInput)

@@ -525,6 +525,13 @@ std::vector<KeySpec> case_schema()
                          "are removed."),
                      1, 1000000, false, false),
               &CaseConfig::checkpoint, &CheckpointConfig::keep));
+
+    s.push_back(
+        bound(positive(key("run", "max_memory", T::real, "B", "none",
+                           "The most memory the run may take: a run whose estimate (printed "
+                           "at its start) is larger stops before any work (exit status 2). "
+                           "None: the machine's memory (its cgroup limit, if lower).")),
+              &CaseConfig::run, &RunConfig::max_memory));
     return s;
 }
 

@@ -453,5 +453,15 @@ TEST(CheckpointFiles, ListedNewestFirstAndPrunedToTheNewest)
     fs::remove_all(run);
 }
 
+TEST(CheckpointFormat, DocsOutputFilesStateTheVersionTheProgramWrites)
+{
+    // Issue 17: docs/output-files.md said version 2 while fddem wrote 3.
+    const std::string docs =
+        test::file_contents(std::string(FDDEM_SOURCE_DIR) + "/docs/output-files.md");
+    const std::string stated = "Format (version " + std::to_string(checkpoint_format_version);
+    EXPECT_NE(docs.find(stated), std::string::npos)
+        << "docs/output-files.md does not say \"" << stated << "\"";
+}
+
 } // namespace
 } // namespace fddem
