@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 
 namespace fddem {
@@ -35,15 +36,21 @@ MarkerSet<Dim> make_ball_markers(const Ball<Dim>& ball, int n_rings)
         set.volumes.push_back(4.0 / 3.0 * pi * std::pow(0.5 * h, 3));
         const double golden = pi * (3.0 - std::sqrt(5.0));
         for (int i = 1; i <= n_rings; ++i) {
-            const int count = std::max(1, static_cast<int>(std::lround(4.0 * pi * i * i)));
+            // Point-symmetric: the spiral covers the upper half of the shell and each of its
+            // markers has a twin at −r, so that the centroid is the centre to round-off (a whole
+            // spiral put it up to 1 % of R off, and a settling sphere drifted sideways).
+            const int pairs = std::max(1, static_cast<int>(std::lround(2.0 * pi * i * i)));
             const double shell =
                 4.0 / 3.0 * pi * h * h * h * (std::pow(i + 0.5, 3) - std::pow(i - 0.5, 3));
-            for (int k = 0; k < count; ++k) {
-                const double z = 1.0 - (2.0 * k + 1.0) / count;
+            for (int k = 0; k < pairs; ++k) {
+                const double z = 1.0 - (2.0 * k + 1.0) / (2.0 * pairs);
                 const double r = std::sqrt(1.0 - z * z);
                 const double phi = golden * k;
-                set.offsets.push_back(i * h * Vec<3>(r * std::cos(phi), r * std::sin(phi), z));
-                set.volumes.push_back(shell / count);
+                const Vec<3> offset = i * h * Vec<3>(r * std::cos(phi), r * std::sin(phi), z);
+                for (const Vec<3>& twin : {offset, Vec<3>(-offset)}) {
+                    set.offsets.push_back(twin);
+                    set.volumes.push_back(shell / (2.0 * pairs));
+                }
             }
         }
     }
