@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <numbers>
 
 namespace fddem {
@@ -36,20 +35,24 @@ MarkerSet<Dim> make_ball_markers(const Ball<Dim>& ball, int n_rings)
         set.volumes.push_back(4.0 / 3.0 * pi * std::pow(0.5 * h, 3));
         const double golden = pi * (3.0 - std::sqrt(5.0));
         for (int i = 1; i <= n_rings; ++i) {
-            // Point-symmetric: the spiral covers the upper half of the shell and each of its
-            // markers has a twin at −r, so that the centroid is the centre to round-off (a whole
-            // spiral put it up to 1 % of R off, and a settling sphere drifted sideways).
-            const int pairs = std::max(1, static_cast<int>(std::lround(2.0 * pi * i * i)));
+            // Mirror-symmetric in each axis plane: a golden-angle spiral over one octant of the
+            // shell, reflected into the other seven. The centroid is then the centre, and a body
+            // in a symmetric flow feels no sideways force from its layout (a whole spiral put
+            // the centroid up to 1 % of R off, and a settling sphere drifted sideways).
+            const int per_octant = std::max(1, static_cast<int>(std::lround(pi * i * i / 2.0)));
             const double shell =
                 4.0 / 3.0 * pi * h * h * h * (std::pow(i + 0.5, 3) - std::pow(i - 0.5, 3));
-            for (int k = 0; k < pairs; ++k) {
-                const double z = 1.0 - (2.0 * k + 1.0) / (2.0 * pairs);
+            const double volume = shell / (8.0 * per_octant);
+            for (int k = 0; k < per_octant; ++k) {
+                const double z = 1.0 - (k + 0.5) / per_octant;
                 const double r = std::sqrt(1.0 - z * z);
-                const double phi = golden * k;
-                const Vec<3> offset = i * h * Vec<3>(r * std::cos(phi), r * std::sin(phi), z);
-                for (const Vec<3>& twin : {offset, Vec<3>(-offset)}) {
-                    set.offsets.push_back(twin);
-                    set.volumes.push_back(shell / (2.0 * pairs));
+                const double phi = std::fmod(golden * k, 0.5 * pi) + 0.25 * pi / per_octant;
+                const Vec<3> first = i * h * Vec<3>(r * std::cos(phi), r * std::sin(phi), z);
+                for (int signs = 0; signs < 8; ++signs) {
+                    set.offsets.push_back(first.cwiseProduct(
+                        Vec<3>((signs & 1) != 0 ? -1.0 : 1.0, (signs & 2) != 0 ? -1.0 : 1.0,
+                               (signs & 4) != 0 ? -1.0 : 1.0)));
+                    set.volumes.push_back(volume);
                 }
             }
         }

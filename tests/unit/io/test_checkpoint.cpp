@@ -309,7 +309,7 @@ TEST(CheckpointRestart, FrictionalDisksKeepTheirTangentialSpringsBitForBit)
 TEST(CheckpointRestart, SphereOnTheFloorContinuesBitForBit3D)
 {
     const CaseConfig config = read_case_string(falling_balls_case(3), "test:sphere");
-    // Step 18: the first bounce (steps 17–18) with the point-symmetric shells of issue 17.
+    // Step 18: in the first bounce with the mirror-symmetric shells of issue 17.
     const int in_contact = expect_bit_identical_continuation<3>(config, 18, 4);
     EXPECT_GT(in_contact, 0) << "the checkpoint should catch a contact in flight";
 }
