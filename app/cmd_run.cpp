@@ -38,7 +38,7 @@ fs::path default_run_directory(const RunOptions& options, const CaseConfig& conf
 
 /// The run as the user sees it on stderr: a status line redrawn on a terminal (plain lines
 /// every output.log_interval steps otherwise, none with --quiet), messages on their own
-/// lines; SIGINT and SIGTERM stop the run after a checkpoint once its time loop has begun.
+/// lines; SIGINT, SIGTERM and SIGHUP stop the run after a step, with a checkpoint.
 class TerminalMonitor final : public RunMonitor {
 public:
     TerminalMonitor(const RunOptions& options, const CaseConfig& config)
@@ -49,11 +49,7 @@ public:
     }
 
     void message(const std::string& text) override { progress_.message(text); }
-    void loop_started(long step, double time) override
-    {
-        install_interrupt_handlers();
-        progress_.start(step, time);
-    }
+    void loop_started(long step, double time) override { progress_.start(step, time); }
     void step_done(long step, double time, int outer_iterations) override
     {
         progress_.update(step, time, outer_iterations);
@@ -82,6 +78,7 @@ int exit_status(const RunResult& result)
 
 int run_command(const RunOptions& options)
 {
+    install_interrupt_handlers();
     if (!options.restart_directory.empty()) {
         const fs::path directory = options.restart_directory;
         const CaseConfig config = read_restart_case(directory, options.overrides);

@@ -2,6 +2,7 @@
 #include "interrupt.hpp"
 
 #include <csignal>
+#include <initializer_list>
 
 namespace fddem::app {
 namespace {
@@ -26,8 +27,17 @@ void install_interrupt_handlers()
     // SA_RESTART: system calls the signal interrupts (writing outputs) resume instead of
     // failing; SA_RESETHAND: a second Ctrl-C stops a run that takes too long to finish its step.
     action.sa_flags = SA_RESTART | SA_RESETHAND;
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+        sigaction(signal, &action, nullptr);
+    }
+}
+
+void ignore_broken_pipes()
+{
+    struct sigaction action {};
+    action.sa_handler = SIG_IGN;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGPIPE, &action, nullptr);
 }
 
 int pending_interrupt() noexcept

@@ -10,8 +10,10 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 
 namespace {
 
@@ -33,11 +35,26 @@ public:
     ~MpiSession() { fddem::finish_mpi(); }
 };
 
+/// "unknown subcommand 'bogus' …" when the first argument is a word that names no subcommand
+/// (`fddem bogus`, which CLI11 reports only as "A subcommand is required"); "" otherwise.
+std::string unknown_subcommand(const CLI::App& app, int argc, char** argv)
+{
+    if (argc < 2 || argv[1][0] == '-' || !app.get_subcommands().empty()) {
+        return "";
+    }
+    std::string names;
+    for (const CLI::App* command : app.get_subcommands({})) {
+        names += (names.empty() ? "" : ", ") + command->get_name();
+    }
+    return "unknown subcommand '" + std::string(argv[1]) + "' (the subcommands are " + names + ")";
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
     using namespace fddem::app;
+    ignore_broken_pipes();
     MpiSession mpi(&argc, &argv);
 
     CLI::App app{"fddem: rigid particles in viscous incompressible fluid (FD-DEM, Wu & Yuan 2015)"};
@@ -90,7 +107,9 @@ int main(int argc, char** argv)
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "fddem: command line: %s (see fddem --help)\n", e.what());
+        const std::string unknown = unknown_subcommand(app, argc, argv);
+        std::fprintf(stderr, "fddem: command line: %s (see fddem --help)\n",
+                     unknown.empty() ? e.what() : unknown.c_str());
         return exit_bad_input;
     }
     if (*run_cmd && run.case_file.empty() && run.restart_directory.empty()) {

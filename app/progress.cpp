@@ -46,6 +46,17 @@ std::string Progress::status_text(long step, double time, int outer_iterations,
                        percent, outer_iterations, rate, eta);
 }
 
+void Progress::write(const std::string& text)
+{
+    if (is_closed_) {
+        return;
+    }
+    // Not fmt::print, which throws when the write fails: SIGPIPE is ignored (app/interrupt.hpp),
+    // and a reader that went away must not stop the run.
+    is_closed_ = std::fwrite(text.data(), 1, text.size(), stream_) != text.size() ||
+                 std::fflush(stream_) != 0;
+}
+
 void Progress::update(long step, double time, int outer_iterations)
 {
     const auto now = std::chrono::steady_clock::now();
@@ -55,21 +66,19 @@ void Progress::update(long step, double time, int outer_iterations)
             return;
         }
         last_draw_ = now;
-        fmt::print(stream_, "\r{}   ", status_text(step, time, outer_iterations, now));
-        std::fflush(stream_);
+        write(fmt::format("\r{}   ", status_text(step, time, outer_iterations, now)));
         has_line_ = true;
         return;
     }
     if (step % log_interval_ == 0) {
-        fmt::print(stream_, "{}\n", status_text(step, time, outer_iterations, now));
-        std::fflush(stream_);
+        write(status_text(step, time, outer_iterations, now) + "\n");
     }
 }
 
 void Progress::finish()
 {
     if (has_line_) {
-        std::fputc('\n', stream_);
+        write("\n");
         has_line_ = false;
     }
 }
@@ -77,8 +86,7 @@ void Progress::finish()
 void Progress::message(const std::string& text)
 {
     finish();
-    fmt::print(stream_, "{}\n", text);
-    std::fflush(stream_);
+    write(text + "\n");
 }
 
 } // namespace fddem::app

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Progress of a run: a redrawn status line on a terminal, plain periodic lines otherwise.
+// Progress of a run: a redrawn status line on a terminal, plain periodic lines otherwise. Once a
+// write fails (stderr closed: `fddem run … 2>&1 | head`), nothing more is printed; the run goes
+// on.
 
 #include <chrono>
 #include <cstdio>
@@ -27,6 +29,8 @@ public:
     [[nodiscard]] static std::string clock_text(double seconds);
 
 private:
+    /// Writes `text` and flushes it, unless the stream has failed before; a failure closes it.
+    void write(const std::string& text);
     /// "step N  t = … s (…%)  K outer  … steps/s  ETA h:mm:ss"
     [[nodiscard]] std::string status_text(long step, double time, int outer_iterations,
                                           std::chrono::steady_clock::time_point now) const;
@@ -38,6 +42,7 @@ private:
     std::chrono::steady_clock::time_point start_;
     std::chrono::steady_clock::time_point last_draw_;
     bool has_line_ = false;
+    bool is_closed_ = false; ///< a write failed: print no more
     long first_step_ = 0;
     double first_time_ = 0.0; ///< [s]
 };

@@ -45,6 +45,10 @@ const std::vector<std::string> toml_tokens = {
     "true", "false", "inf", "+inf", "-inf", "nan", "-nan", "0x", "0o", "0b", "_", "e", "E", "-0.0",
     "1e-300", "5e-324", "1e300", "1e308", "1e309", "2147483648", "-2147483649",
     "9223372036854775807", "-9223372036854775808", "1979-05-27T07:32:00Z", "07:32:00",
+    // issue 17: integers beyond 2^53, a box far from the origin, an end between steps, 10^12
+    // steps, a --set after the NUL (fuzz_case_reader.cpp) with a control character
+    "9007199254740993", "9007199254740992", "[1e308, 0.0]", "1.005", "1e-12", "1e400",
+    std::string("\0", 1), std::string("\0time.dt=", 9), std::string("\0nosuch.key=1", 13), "\x01",
     // one entry per axis
     "[1.0, 1.0]", "[1.0, 1.0, 1.0]", "[8, 8]", "[8, 8, 8]", "[true, false]"};
 

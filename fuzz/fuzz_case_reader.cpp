@@ -18,6 +18,7 @@
 #include <exception>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace {
 
@@ -53,9 +54,17 @@ void read_back(const fddem::CaseConfig& first)
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): libFuzzer hands out bytes
-    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    const std::string_view input(reinterpret_cast<const char*>(data), size);
+    // Bytes after a NUL are one --set override (control characters and all): the case file
+    // and the command line, both reach the reader.
+    const std::size_t nul = input.find('\0');
+    const std::string_view text = input.substr(0, nul);
+    std::vector<std::string> overrides;
+    if (nul != std::string_view::npos) {
+        overrides.emplace_back(input.substr(nul + 1));
+    }
     try {
-        const fddem::CaseConfig config = fddem::read_case_string(text, "fuzz.toml");
+        const fddem::CaseConfig config = fddem::read_case_string(text, "fuzz.toml", overrides);
         read_back(config);
     } catch (const fddem::InputError& e) {
         (void)e.formatted(); // what `fddem run` prints, exit status 2

@@ -80,7 +80,7 @@ protected:
 long failed_step(const std::string& output)
 {
     std::smatch m;
-    const std::regex pattern(R"(numerical failure at step (\d+), t = ([0-9.e+-]+) s, in body 0:)");
+    const std::regex pattern(R"(numerical failure at step (\d+), t = ([0-9.e+-]+) s, in body 1:)");
     return std::regex_search(output, m, pattern) ? std::stol(m[1].str()) : -1;
 }
 

@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <vector>
 
+#include "support/case_builders.hpp"
 #include "support/files_and_programs.hpp"
 
 namespace {
@@ -36,25 +37,7 @@ protected:
     {
         root_ = fddem::test::fresh_test_directory("fddem_cli_test_");
         case_file_ = root_ / "cavity.toml";
-        std::ofstream(case_file_) << R"([domain]
-size = [1.0, 1.0]
-cells = [16, 16]
-[walls]
-y_high = [1.0, 0.0]
-[fluid]
-density = 1.0
-viscosity = 0.01
-[time]
-dt = 0.0625
-end = 0.5
-[output]
-field_interval = 0.25
-[[output.lines]]
-name = "vertical_centerline"
-from = [0.5, 0.0]
-to = [0.5, 1.0]
-points = 17
-)";
+        std::ofstream(case_file_) << fddem::test::small_cavity_case;
     }
     void TearDown() override { fs::remove_all(root_); }
 
@@ -219,7 +202,28 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"bad_solver", "--set simple.pressure_solver=petsc",
                "must be one of: auto, fft, hypre"},
         BadRun{"unwritable_output", "-o /proc/fddem/run", "cannot create the run directory"},
-        BadRun{"unknown_option", "--frobnicate", "frobnicate"}),
+        BadRun{"unknown_option", "--frobnicate", "frobnicate"},
+        // Issue 17: each of these ran (or failed with exit 1) or blamed the wrong thing.
+        BadRun{"unknown_section_override", "--set nosuch.key=1",
+               "fddem: --set: nosuch: unknown section 'nosuch'"},
+        BadRun{"overflowing_override", "--set time.dt=1e400",
+               "--set: time.dt: cannot read the value '1e400'"},
+        BadRun{"newline_in_override", "--set \"$(printf 'time.dt=0.004\\ntime.end=5')\"",
+               "--set: time.dt: 'time.dt=0.004\\ntime.end=5' holds a control character"},
+        BadRun{"integer_without_exact_double", "--set fluid.density=9007199254740993",
+               "fluid.density: the integer 9007199254740993 has no exact floating-point value"},
+        BadRun{"box_far_from_origin", "--set domain.origin=[1e308,0]",
+               "domain.origin: the box spans [1e+308, 1e+308] on axis 0"},
+        BadRun{"end_between_steps", "--set time.end=0.55",
+               "time.end: 0.55 s is not a whole number of time steps of 0.0625 s"},
+        BadRun{"too_many_steps", "--set time.dt=1e-12 --set time.end=1",
+               "more than time.max_steps = 100000000"},
+        BadRun{"grid_beyond_the_machine", "--set domain.cells=[100000,100000]",
+               "domain.cells: a grid of 100000 × 100000 cells needs about 7.92e+03 GiB "
+               "(estimate), more than the memory of this machine"},
+        BadRun{"grid_beyond_max_memory", "--set run.max_memory=1e6",
+               "domain.cells: a grid of 16 × 16 cells needs about 48.2 MiB (estimate), more "
+               "than run.max_memory = 1e+06 B (0.954 MiB); use fewer cells"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST_F(Cli, MissingCaseFileIsBadInput)
@@ -227,6 +231,21 @@ TEST_F(Cli, MissingCaseFileIsBadInput)
     const Result r = run("run " + (root_ / "nope.toml").string());
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("cannot open the case file"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, BadCommandLinesNameTheirFault)
+{
+    // Issue 17: `fddem bogus` said only "A subcommand is required", and a directory given as
+    // the case file read as an empty case ("missing required key 'domain.size'").
+    const std::vector<std::pair<std::string, std::string>> bad{
+        {"bogus", "unknown subcommand 'bogus' (the subcommands are run, info, validate)"},
+        {"run " + root_.string(), root_.string() + ": is a directory, not a case file"}};
+    for (const auto& [arguments, message] : bad) {
+        const Result r = run(arguments);
+        EXPECT_EQ(r.status, 2) << arguments;
+        EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    }
 }
 
 TEST_F(Cli, InfoListsKeysAndLibraries)

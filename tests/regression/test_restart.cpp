@@ -20,15 +20,12 @@
 #include <fstream>
 #include <map>
 #include <random>
-#include <spawn.h>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 #include <vector>
-
-extern char** environ; // NOLINT: POSIX, for posix_spawn
 
 #include "support/files_and_programs.hpp"
 
@@ -132,24 +129,8 @@ protected:
     /// Starts `fddem run -q` of the case into `directory` without waiting.
     pid_t start(const fs::path& directory) const
     {
-        posix_spawn_file_actions_t actions;
-        posix_spawn_file_actions_init(&actions);
-        posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log_.c_str(),
-                                         O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-        std::vector<std::string> words = {FDDEM_EXECUTABLE,   "run", case_file_.string(), "-o",
-                                          directory.string(), "-q"};
-        std::vector<char*> argv;
-        for (std::string& w : words) {
-            argv.push_back(w.data());
-        }
-        argv.push_back(nullptr);
-        pid_t pid = 0;
-        const int error =
-            posix_spawn(&pid, FDDEM_EXECUTABLE, &actions, nullptr, argv.data(), environ);
-        posix_spawn_file_actions_destroy(&actions);
-        EXPECT_EQ(error, 0);
-        return pid;
+        return fddem::test::start_fddem(
+            {"run", case_file_.string(), "-o", directory.string(), "-q"}, log_);
     }
 
     /// Waits until `directory` holds `n` checkpoints (or 120 s pass).
@@ -398,6 +379,40 @@ TEST_F(Restart, DamagedNewestCheckpointFallsBackToThePreviousOne)
         << r.output;
     EXPECT_TRUE(fs::exists(copy / "checkpoints/checkpoint_0000000035.ckpt.damaged"));
     expect_same_outputs(ref, copy);
+}
+
+TEST_F(Restart, DeletedFieldFramesAreLeftOutOfTheCollections)
+{
+    // Issue 17: a restart did not notice frames the user had deleted, and fields.pvd then
+    // listed missing files. Now they are left out, with a warning, and the frames after the
+    // checkpoint are those of the uninterrupted run.
+    const fs::path ref = reference();
+    const fs::path copy = copy_stopped_at(ref, 35, "deleted_frames");
+    fs::remove(copy / "fields/fields_000001.vtr");
+    fs::remove(copy / "particles/particles_000002.vtp");
+    const Result r = run("run --restart " + copy.string() + " -q");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: fields/fields_000001.vtr, a frame of the checkpoint, is "
+                            "missing; left out of its .pvd"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("particles/particles_000002.vtp"), std::string::npos) << r.output;
+    for (const char* pvd : {"fields.pvd", "particles.pvd"}) {
+        const std::string text = file_contents(copy / pvd);
+        EXPECT_EQ(text.find("fields_000001.vtr"), std::string::npos) << text;
+        EXPECT_EQ(text.find("particles_000002.vtp"), std::string::npos) << text;
+        for (std::size_t at = text.find("file=\""); at != std::string::npos;
+             at = text.find("file=\"", at + 1)) {
+            const std::size_t begin = at + 6;
+            const std::string file = text.substr(begin, text.find('"', begin) - begin);
+            EXPECT_TRUE(fs::exists(copy / file)) << pvd << " lists the missing " << file;
+        }
+    }
+    for (const char* frame : {"fields/fields_000004.vtr", "fields/fields_000006.vtr",
+                              "particles/particles_000006.vtp"}) {
+        EXPECT_TRUE(file_contents(ref / frame) == file_contents(copy / frame)) << frame;
+    }
+    EXPECT_EQ(solver_rows_without_wall_time(ref), solver_rows_without_wall_time(copy));
 }
 
 TEST_F(Restart, NoUsableCheckpointIsBadInputAndChangesNothing)

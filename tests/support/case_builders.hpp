@@ -27,4 +27,27 @@ inline CaseConfig cavity_config(int n, double reynolds, double dt, double end_ti
     return c;
 }
 
+/// The case file of the program's tests (regression/test_cli.cpp, test_run_directory.cpp): a
+/// 16 × 16 cavity (Re 100), 8 steps of 0.0625 s to t = 0.5, field frames at 0, 0.25 and 0.5 s,
+/// and a line sample.
+inline constexpr const char* small_cavity_case = R"([domain]
+size = [1.0, 1.0]
+cells = [16, 16]
+[walls]
+y_high = [1.0, 0.0]
+[fluid]
+density = 1.0
+viscosity = 0.01
+[time]
+dt = 0.0625
+end = 0.5
+[output]
+field_interval = 0.25
+[[output.lines]]
+name = "vertical_centerline"
+from = [0.5, 0.0]
+to = [0.5, 1.0]
+points = 17
+)";
+
 } // namespace fddem::test

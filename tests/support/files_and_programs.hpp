@@ -2,18 +2,22 @@
 #pragma once
 /// Helpers for tests that look at files and run the fddem program: a file read whole, solver.csv
 /// without its wall time, a fresh scratch directory per test, and `fddem …` run through the shell
-/// with its output captured.
+/// with its output captured, or started in the background.
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <spawn.h>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
+
+extern char** environ; // NOLINT: POSIX, for posix_spawn
 
 namespace fddem::test {
 
@@ -73,6 +77,36 @@ inline ProgramResult run_fddem(const std::string& arguments, const std::filesyst
         std::string(FDDEM_EXECUTABLE) + " " + arguments + " > " + log.string() + " 2>&1";
     const int raw = std::system(command.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, file_contents(log)};
+}
+
+/// Starts `fddem WORDS…` (the build's program) without waiting, stdout and stderr into `log`;
+/// returns its pid (for kill and waitpid).
+inline pid_t start_fddem(std::vector<std::string> words, const std::filesystem::path& log)
+{
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    words.insert(words.begin(), FDDEM_EXECUTABLE);
+    std::vector<char*> argv;
+    for (std::string& w : words) {
+        argv.push_back(w.data());
+    }
+    argv.push_back(nullptr);
+    pid_t pid = 0;
+    const int error = posix_spawn(&pid, FDDEM_EXECUTABLE, &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    EXPECT_EQ(error, 0);
+    return pid;
+}
+
+/// The exit status of the process `pid` once it ends; −1 if a signal ended it.
+inline int wait_for_exit(pid_t pid)
+{
+    int raw = 0;
+    ::waitpid(pid, &raw, 0);
+    return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
 } // namespace fddem::test

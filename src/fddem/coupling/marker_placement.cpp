@@ -28,7 +28,8 @@ Vec<Dim> to_world(const Vec<Dim>& r, double angle)
 template <int Dim, class Kernel>
 void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time)
 {
-    const std::string who = "body " + std::to_string(body.id);
+    // Numbered from 1 in messages, as in `--set bodies.N.key=value`.
+    const std::string who = "body " + std::to_string(body.id + 1);
     if (!body.centre.allFinite() || !body.velocity.allFinite()) {
         throw NumericalError(step, time, who,
                              "the body's motion is not finite: the coupling has blown up");

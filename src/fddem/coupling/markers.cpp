@@ -36,8 +36,8 @@ double middle_shell(int i, double h)
     }
 }
 
-/// The `count` unit directions of ring (shell) i: 6i evenly spaced angles in 2D, round(4π i²)
-/// points of a golden-angle spiral in 3D.
+/// The markers of ring (shell) i at radius i h, sharing `shell_volume` equally: 6i evenly spaced
+/// angles in 2D, 8 round(π i²/2) points in 3D (an octant's golden-angle spiral, mirrored).
 template <int Dim>
 void add_ring(MarkerSet<Dim>& set, int i, double h, double shell_volume)
 {
@@ -49,14 +49,24 @@ void add_ring(MarkerSet<Dim>& set, int i, double h, double shell_volume)
             set.volumes.push_back(shell_volume / count);
         }
     } else {
+        // Mirror-symmetric in each axis plane: a golden-angle spiral over one octant of the
+        // shell, reflected into the other seven. The centroid is then the centre, and a body
+        // in a symmetric flow feels no sideways force from its layout (a whole spiral put
+        // the centroid up to 1 % of R off, and a settling sphere drifted sideways).
         const double golden = pi * (3.0 - std::sqrt(5.0));
-        const int count = std::max(1, static_cast<int>(std::lround(4.0 * pi * i * i)));
-        for (int k = 0; k < count; ++k) {
-            const double z = 1.0 - (2.0 * k + 1.0) / count;
+        const int per_octant = std::max(1, static_cast<int>(std::lround(pi * i * i / 2.0)));
+        const double volume = shell_volume / (8.0 * per_octant);
+        for (int k = 0; k < per_octant; ++k) {
+            const double z = 1.0 - (k + 0.5) / per_octant;
             const double r = std::sqrt(1.0 - z * z);
-            const double phi = golden * k;
-            set.offsets.push_back(i * h * Vec<3>(r * std::cos(phi), r * std::sin(phi), z));
-            set.volumes.push_back(shell_volume / count);
+            const double phi = std::fmod(golden * k, 0.5 * pi) + 0.25 * pi / per_octant;
+            const Vec<3> first = i * h * Vec<3>(r * std::cos(phi), r * std::sin(phi), z);
+            for (int signs = 0; signs < 8; ++signs) {
+                set.offsets.push_back(first.cwiseProduct(Vec<3>((signs & 1) != 0 ? -1.0 : 1.0,
+                                                                (signs & 2) != 0 ? -1.0 : 1.0,
+                                                                (signs & 4) != 0 ? -1.0 : 1.0)));
+                set.volumes.push_back(volume);
+            }
         }
     }
 }

@@ -8,8 +8,9 @@
 /// between h_L/2 and R. Each ring's markers share its annulus equally, and the centre marker
 /// owns the disk of radius h_L/2: then Σ ΔV_l = π R² exactly, every ring marker has the same
 /// volume π h_L²/3, and neighbours on a ring are π h_L/3 ≈ 1.05 h_L apart. A sphere's shells
-/// hold round(4π i²) markers on a golden-angle spiral (spacing ≈ h_L), sharing the shell's
-/// volume equally.
+/// hold 8 round(π i²/2) markers (spacing ≈ h_L), sharing the shell's volume equally: a
+/// golden-angle spiral over one octant, reflected through the planes of the axes. Every layout
+/// is mirror-symmetric in those planes, so its centroid is the centre.
 
 #include "fddem/bodies/ball.hpp"
 #include "fddem/bodies/marker_set.hpp"

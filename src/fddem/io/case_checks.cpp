@@ -212,7 +212,7 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
                 doc.fail("bodies.position", t.get("position"),
                          fmt::format("body {} reaches outside the box on axis {} (centre "
                                      "{:g}, radius {:g}, box [{:g}, {:g}])",
-                                     k, d, b.position[d], r, lo, hi));
+                                     k + 1, d, b.position[d], r, lo, hi));
             }
         }
         for (std::size_t j = 0; j < k; ++j) {
@@ -223,7 +223,7 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
             }
             if (std::sqrt(distance2) < 0.5 * (b.diameter + o.diameter)) {
                 doc.fail("bodies.position", t.get("position"),
-                         fmt::format("body {} overlaps body {}", k, j));
+                         fmt::format("body {} overlaps body {}", k + 1, j + 1));
             }
         }
     }

@@ -3,6 +3,7 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/io/case_schema.hpp"
+#include "fddem/io/floating_point_hold.hpp"
 
 #include <fmt/format.h>
 
@@ -53,17 +54,30 @@ std::vector<std::string> split_at_dots(const std::string& path)
                             text + "'");
 }
 
+/// Whether a --set value that is not TOML may be taken as a bare word (a string): not when it
+/// starts as a number, an array, a table or a quoted string would (`1e400`, `[64,64`), whose
+/// TOML error says more than "got string" would.
+bool may_be_bare_word(const std::string& value)
+{
+    return !value.empty() && value.find_first_of("0123456789+-.[{\"'") != 0;
+}
+
 /// The value of --set as TOML; a bare word is a string.
 toml::table parse_override_value(const std::string& path, const std::string& value)
 {
+    const FloatingPointHold hold; // 1e400 overflows while it is read
     try {
         return toml::parse("v = " + value);
-    } catch (const toml::parse_error&) {
-        try {
-            return toml::parse("v = \"" + value + "\"");
-        } catch (const toml::parse_error& e) {
+    } catch (const toml::parse_error& e) {
+        if (!may_be_bare_word(value)) {
             fail_override(path,
                           "cannot read the value '" + value + "': " + std::string(e.description()));
+        }
+        try {
+            return toml::parse("v = \"" + value + "\"");
+        } catch (const toml::parse_error& word_error) {
+            fail_override(path, "cannot read the value '" + value +
+                                    "': " + std::string(word_error.description()));
         }
     }
 }
@@ -89,7 +103,37 @@ std::pair<std::size_t, std::size_t> override_entries(const std::string& path,
     return {n - 1, n};
 }
 
+/// Where `text` holds its first control character (a newline, a tab, …), npos if nowhere.
+std::size_t find_control_character(std::string_view text)
+{
+    const auto* at = std::find_if(text.begin(), text.end(), [](char ch) {
+        const auto byte = static_cast<unsigned char>(ch);
+        return byte < 0x20 || byte == 0x7f;
+    });
+    return at == text.end() ? std::string_view::npos : static_cast<std::size_t>(at - text.begin());
+}
+
 } // namespace
+
+std::string escape_control_characters(std::string_view text)
+{
+    std::string escaped;
+    for (const char ch : text) {
+        const auto byte = static_cast<unsigned char>(ch);
+        if (ch == '\\') {
+            escaped += "\\\\";
+        } else if (ch == '\n') {
+            escaped += "\\n";
+        } else if (ch == '\t') {
+            escaped += "\\t";
+        } else if (byte < 0x20 || byte == 0x7f) {
+            escaped += fmt::format("\\x{:02x}", byte);
+        } else {
+            escaped += ch;
+        }
+    }
+    return escaped;
+}
 
 bool is_table_array(const std::string& section)
 {
@@ -103,6 +147,7 @@ CaseDocument::CaseDocument(std::string_view text, std::string source_name,
     : file_(std::move(source_name))
 {
     try {
+        const FloatingPointHold hold; // 1e400 overflows while it is read
         doc_ = toml::parse(text, file_);
     } catch (const toml::parse_error& e) {
         throw InputError(file_, static_cast<int>(e.source().begin.line), "",
@@ -117,6 +162,14 @@ CaseDocument::CaseDocument(std::string_view text, std::string source_name,
 /// name.key=value (every entry) and name.N.key=value (entry N, counted from 1).
 void CaseDocument::apply_override(const std::string& text)
 {
+    if (const std::size_t at = find_control_character(text); at != std::string_view::npos) {
+        // A newline would hide a second key=value in one --set ($'time.dt=0.004\ntime.end=5').
+        fail_override(text.substr(0, std::min(at, text.find('='))),
+                      fmt::format("'{}' holds a control character (byte {} of it, 0x{:02x}); give "
+                                  "one section.key=value per --set",
+                                  escape_control_characters(text), at + 1,
+                                  static_cast<unsigned char>(text[at])));
+    }
     const auto equals = text.find('=');
     const std::string path = equals == std::string::npos ? text : text.substr(0, equals);
     const std::vector<std::string> parts = split_at_dots(path);
@@ -168,7 +221,13 @@ void CaseDocument::apply_override(const std::string& text)
 void CaseDocument::fail(const std::string& key, const toml::node* node,
                         const std::string& message) const
 {
-    if (overridden_.count(key) != 0) {
+    // A key set by --set, or a section that only --set brought in (--set nosuch.key=1).
+    const auto is_under_key = [&](const std::string& set) { return set.starts_with(key + "."); };
+    const bool is_from_override =
+        overridden_.count(key) != 0 ||
+        (!key.empty() && std::any_of(overridden_.begin(), overridden_.end(), is_under_key) &&
+         node != nullptr && node->source().path == nullptr);
+    if (is_from_override) {
         throw InputError(override_source, 0, key, message);
     }
     const int line = node != nullptr ? static_cast<int>(node->source().begin.line) : 0;
@@ -227,7 +286,7 @@ std::string CaseDocument::as_run() const
 {
     std::ostringstream text;
     text << "# The case as run by fddem: defaults filled in and --set overrides applied.\n"
-         << "# Source: " << file_ << "\n\n"
+         << "# Source: " << escape_control_characters(file_) << "\n\n"
          << doc_ << "\n";
     return text.str();
 }

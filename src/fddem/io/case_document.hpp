@@ -73,6 +73,10 @@ private:
 void check_derived(const CaseDocument& doc, const std::string& section, const std::string& name,
                    double value, const std::string& from);
 
+/// `text` with its control characters written as escapes (\n, \t, \x01) and `\` as `\\`: a file
+/// name on one line of a comment.
+[[nodiscard]] std::string escape_control_characters(std::string_view text);
+
 /// Whether `section` is an array of tables ([[bodies]], [[output.lines]]).
 [[nodiscard]] bool is_table_array(const std::string& section);
 

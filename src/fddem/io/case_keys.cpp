@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 
 namespace fddem {
 namespace {
@@ -103,12 +105,42 @@ int read_dimension(const CaseDocument& doc)
     return static_cast<int>(array->size());
 }
 
+/// A number of the case as a double: a float as it is, an integer exactly (none if it has no
+/// exact double: beyond 2^53 most have none, and toml++ then gives no value at all).
+std::optional<double> exact_number(const toml::node& node)
+{
+    if (!node.is_integer()) {
+        return node.value<double>();
+    }
+    const std::int64_t integer = node.as_integer()->get();
+    const auto real = static_cast<double>(integer);
+    // 2^63 rounds INT64_MAX up and does not fit back; every other double here does.
+    constexpr double two_to_63 = 9223372036854775808.0;
+    if (real >= two_to_63 || static_cast<std::int64_t>(real) != integer) {
+        return std::nullopt;
+    }
+    return real;
+}
+
 /// Checks one value against its spec; `dimension` is the vector length expected.
 void check_value(const KeySpec& spec, const toml::node& node, int dimension,
                  const CaseDocument& doc, const std::string& key)
 {
     const auto is_number = [](const toml::node& n) {
         return n.is_floating_point() || n.is_integer();
+    };
+    // A real key's number: an integer without an exact double is refused, not read as 0.
+    const auto real_value = [&](const toml::node& number) {
+        const std::optional<double> exact = exact_number(number);
+        if (!exact) {
+            const std::int64_t integer = number.as_integer()->get();
+            doc.fail(key, &node,
+                     fmt::format("the integer {} has no exact floating-point value (beyond 2^53 = "
+                                 "9007199254740992 not every integer has one); write it as a "
+                                 "float ({:.16e}) if that rounding is meant",
+                                 integer, static_cast<double>(integer)));
+        }
+        return *exact;
     };
     const auto check_range = [&](double x) {
         if (!std::isfinite(x)) {
@@ -137,13 +169,13 @@ void check_value(const KeySpec& spec, const toml::node& node, int dimension,
         if (!is_number(node)) {
             wrong_type();
         }
-        check_range(node.value<double>().value_or(0.0));
+        check_range(real_value(node));
         return;
     case KeyType::integer:
         if (!node.is_integer()) {
             wrong_type();
         }
-        check_range(static_cast<double>(node.value<std::int64_t>().value_or(0)));
+        check_range(static_cast<double>(node.as_integer()->get()));
         return;
     case KeyType::string:
         if (!node.is_string()) {
@@ -187,7 +219,9 @@ void check_value(const KeySpec& spec, const toml::node& node, int dimension,
                 wrong_type();
             }
             if (spec.type != KeyType::boolean_vector) {
-                check_range(element.value<double>().value_or(0.0));
+                check_range(spec.type == KeyType::integer_vector
+                                ? static_cast<double>(element.as_integer()->get())
+                                : real_value(element));
             }
         }
         return;
@@ -280,7 +314,7 @@ KeyValue value_of(const KeySpec& spec, const toml::node& node, int dimension)
         }
         return out;
     };
-    const auto real = [](const toml::node& n) { return n.value<double>().value_or(0.0); };
+    const auto real = [](const toml::node& n) { return exact_number(n).value_or(0.0); };
     const auto integer = [](const toml::node& n) { return n.value<std::int64_t>().value_or(0); };
     const auto boolean = [](const toml::node& n) { return n.value<bool>().value_or(false); };
     switch (spec.type) {

@@ -5,32 +5,19 @@
 #include "fddem/io/case_checks.hpp"
 #include "fddem/io/case_document.hpp"
 #include "fddem/io/case_keys.hpp"
+#include "fddem/io/case_limits.hpp"
 #include "fddem/io/case_schema.hpp"
 #include "fddem/io/contact_derivation.hpp"
+#include "fddem/io/floating_point_hold.hpp"
 #include "fddem/io/nondimensional_derivation.hpp"
 
-#include <cfenv>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
 
 namespace fddem {
 namespace {
-
-/// Extreme (but valid) inputs can overflow what is derived from them; the reader checks each
-/// derived value and names the inputs. Floating-point traps (which the tests enable, STYLE.md
-/// §10) are held meanwhile, and the caller's environment is restored afterwards.
-class FloatingPointHold {
-public:
-    FloatingPointHold() { std::feholdexcept(&saved_); }
-    ~FloatingPointHold() { std::fesetenv(&saved_); }
-    FloatingPointHold(const FloatingPointHold&) = delete;
-    FloatingPointHold& operator=(const FloatingPointHold&) = delete;
-    FloatingPointHold(FloatingPointHold&&) = delete;
-    FloatingPointHold& operator=(FloatingPointHold&&) = delete;
-
-private:
-    std::fenv_t saved_{};
-};
 
 /// The case as run leaves out the defaults filled in for sides that do not exist or are not
 /// walls: both sides of a periodic axis ([walls] velocities and [boundaries] kinds), and the
@@ -57,6 +44,10 @@ CaseConfig read_case_string(std::string_view text, const std::string& source_nam
 {
     CaseDocument doc(text, source_name, overrides);
     CaseConfig c = read_keys(doc, case_schema());
+    {
+        const FloatingPointHold hold;
+        check_limits(doc, c);
+    }
     check_case(doc, c);
     drop_absent_sides(doc, c);
     {
@@ -71,6 +62,10 @@ CaseConfig read_case_string(std::string_view text, const std::string& source_nam
 
 CaseConfig read_case(const std::string& path, const std::vector<std::string>& overrides)
 {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+        throw InputError(path, 0, "", "is a directory, not a case file (give the case's .toml)");
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         throw InputError(path, 0, "", "cannot open the case file");

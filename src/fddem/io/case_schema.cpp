@@ -187,7 +187,8 @@ std::vector<KeySpec> case_schema()
                       &CaseConfig::time, &TimeConfig::dt));
     s.push_back(bound(positive(key("time", "end", T::real, "s", "none",
                                    "End time; at least one of time.end, time.steady_tolerance and "
-                                   "time.rest_speed is required.")),
+                                   "time.rest_speed is required. With the fixed time.dt it must be "
+                                   "a whole number of steps, at most time.max_steps of them.")),
                       &CaseConfig::time, &TimeConfig::end));
     s.push_back(bound(positive(key("time", "steady_tolerance", T::real, none, "none",
                                    "Stop when the flow is steady: max|u^{n+1} − u^n|/Δt · L/U² "
@@ -550,6 +551,13 @@ std::vector<KeySpec> case_schema()
                          "are removed."),
                      1, 1000000, false, false),
               &CaseConfig::checkpoint, &CheckpointConfig::keep));
+
+    s.push_back(
+        bound(positive(key("run", "max_memory", T::real, "B", "none",
+                           "The most memory the run may take: a run whose estimate (printed "
+                           "at its start) is larger stops before any work (exit status 2). "
+                           "None: the machine's memory (its cgroup limit, if lower).")),
+              &CaseConfig::run, &RunConfig::max_memory));
     return s;
 }
 

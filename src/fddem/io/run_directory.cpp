@@ -3,54 +3,177 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/io/atomic_file.hpp"
+#include "fddem/io/run_lock.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
+#include <regex>
 #include <system_error>
-#include <unistd.h>
 
 namespace fddem {
+namespace {
 
-void prepare_run_directory(const std::filesystem::path& directory, bool force)
+namespace fs = std::filesystem;
+
+/// The folders of a run directory that fddem writes into.
+constexpr std::array<const char*, 4> run_folders{"fields", "particles", "samples", "checkpoints"};
+
+/// The file that proves a directory writable (created and removed at once).
+constexpr const char* write_probe = ".fddem-write-test";
+
+/// The files of `directory` and of its run folders, as paths relative to it ("" folder: the
+/// directory itself).
+std::vector<std::string> files_of_run_directory(const fs::path& directory)
 {
-    namespace fs = std::filesystem;
+    std::vector<std::string> files;
+    std::error_code error;
+    const auto add = [&](const fs::path& at, const std::string& prefix) {
+        for (const auto& entry : fs::directory_iterator(at, error)) {
+            if (!entry.is_directory(error)) {
+                files.push_back(prefix + entry.path().filename().string());
+            }
+        }
+    };
+    add(directory, "");
+    for (const char* folder : run_folders) {
+        if (fs::is_directory(directory / folder, error)) {
+            add(directory / folder, std::string(folder) + "/");
+        }
+    }
+    return files;
+}
+
+/// A temporary of an output (`case.toml.tmp.PID`), left by a process killed while it wrote.
+bool is_stale_temporary(const std::string& relative)
+{
+    return is_run_output(relative) && relative.find(".tmp.") != std::string::npos;
+}
+
+/// Left by a run that was stopped before it had written anything of use: the lock file, a
+/// temporary of an output (`case.toml.tmp.PID`: kill -9 while it was written), an empty run
+/// folder.
+bool is_leftover(const fs::path& directory, const fs::directory_entry& entry)
+{
+    std::error_code error;
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory(error)) {
+        return std::find(run_folders.begin(), run_folders.end(), name) != run_folders.end() &&
+               fs::is_empty(entry.path(), error);
+    }
+    return name == run_lock_name || is_stale_temporary(name) ||
+           entry.path() == directory / write_probe;
+}
+
+/// Creating a file proves writability where access() is not enough (read-only mounts).
+void check_writable(const fs::path& directory)
+{
+    const fs::path probe = directory / write_probe;
+    std::FILE* file = std::fopen(probe.c_str(), "wb");
+    if (file == nullptr) {
+        throw InputError(directory.string(), 0, "", "the run directory is not writable");
+    }
+    std::fclose(file);
+    std::error_code error;
+    fs::remove(probe, error);
+}
+
+} // namespace
+
+bool is_run_output(const std::string& relative)
+{
+    static const std::regex outputs(
+        R"((case\.toml|solver\.csv|particles\.csv|summary\.json|fields\.pvd|particles\.pvd|)"
+        R"(fields/fields_[0-9]+\.vtr|particles/particles_[0-9]+\.vtp|samples/[^/]+\.csv|)"
+        R"(checkpoints/checkpoint_[0-9]+\.ckpt(\.damaged)?|\.fddem-write-test)(\.tmp\.[0-9]+)?)");
+    return std::regex_match(relative, outputs);
+}
+
+void check_run_directory(const fs::path& directory, bool force)
+{
     std::error_code error;
     const std::string name = directory.string();
-    if (fs::exists(directory, error)) {
-        if (!fs::is_directory(directory, error)) {
-            throw InputError(name, 0, "", "the run directory exists and is not a directory");
-        }
-        if (!force && !fs::is_empty(directory, error)) {
+    if (!fs::exists(directory, error)) {
+        return;
+    }
+    if (!fs::is_directory(directory, error)) {
+        throw InputError(name, 0, "", "the run directory exists and is not a directory");
+    }
+    if (force) {
+        return;
+    }
+    for (const auto& entry : fs::directory_iterator(directory, error)) {
+        if (!is_leftover(directory, entry)) {
             throw InputError(name, 0, "",
                              "the run directory exists and is not empty; use --force to "
                              "overwrite it or -o to choose another");
         }
     }
-    for (const fs::path& d : {directory, directory / "fields", directory / "samples"}) {
+}
+
+namespace {
+
+/// Removes the files of `directory` and its run folders for which `is_removed(relative path)`.
+template <class Predicate>
+int remove_run_files(const fs::path& directory, const Predicate& is_removed)
+{
+    int removed = 0;
+    for (const std::string& file : files_of_run_directory(directory)) {
+        if (!is_removed(file)) {
+            continue;
+        }
+        std::error_code error;
+        fs::remove(directory / file, error);
+        if (error) {
+            throw InputError(directory.string(), 0, "",
+                             "cannot remove " + file + " of the old run: " + error.message());
+        }
+        ++removed;
+    }
+    return removed;
+}
+
+} // namespace
+
+int remove_run_outputs(const fs::path& directory)
+{
+    return remove_run_files(directory, is_run_output);
+}
+
+void prepare_run_directory(const fs::path& directory, bool force)
+{
+    check_run_directory(directory, force);
+    check_writable(directory);
+    if (force) {
+        remove_run_outputs(directory);
+    } else {
+        remove_run_files(directory, is_stale_temporary); // of a run stopped at its start
+    }
+    std::error_code error;
+    for (const fs::path& d : {directory / "fields", directory / "samples"}) {
         fs::create_directories(d, error);
         if (error) {
             throw InputError(d.string(), 0, "",
                              "cannot create the run directory: " + error.message());
         }
     }
-    if (::access(directory.c_str(), W_OK) != 0) {
-        throw InputError(name, 0, "", "the run directory is not writable");
-    }
-    // Creating a file proves writability where access() is not enough (read-only mounts).
-    const fs::path probe = directory / ".fddem-write-test";
-    std::FILE* file = std::fopen(probe.c_str(), "wb");
-    if (file == nullptr) {
-        throw InputError(name, 0, "", "the run directory is not writable");
-    }
-    std::fclose(file);
-    fs::remove(probe, error);
 }
 
-int remove_unlisted_files(const std::filesystem::path& directory, const std::string& folder,
+void check_run_directory_writable(const fs::path& directory)
+{
+    check_writable(directory);
+    std::error_code error;
+    for (const char* folder : run_folders) {
+        if (fs::is_directory(directory / folder, error)) {
+            check_writable(directory / folder);
+        }
+    }
+}
+
+int remove_unlisted_files(const fs::path& directory, const std::string& folder,
                           const std::string& extension,
                           const std::vector<std::pair<double, std::string>>& listed)
 {
-    namespace fs = std::filesystem;
     std::error_code error;
     if (!fs::is_directory(directory / folder, error)) {
         return 0;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-/// The run directory: created and checked writable before any work.
+/// The run directory: checked before any work, created, cleared of an old run's outputs with
+/// --force.
 
 #include <filesystem>
 #include <string>
@@ -9,10 +10,26 @@
 
 namespace fddem {
 
-/// Creates `directory` (and fields/, samples/). Throws InputError if it exists and is not
-/// empty (unless `force`), or cannot be created or written. With `force` an existing run's
-/// files are left in place until each is replaced.
+/// Whether `relative` (a path relative to a run directory) names a file fddem writes there:
+/// case.toml, the histories, summary.json, the .pvd collections and their frames, the line
+/// samples, the checkpoints (and their `*.damaged`), and a temporary of any of them.
+[[nodiscard]] bool is_run_output(const std::string& relative);
+
+/// Before any work, writing nothing: throws InputError if `directory` exists and is not a
+/// directory, or (unless `force`) holds anything but what a run stopped at its very start leaves
+/// (the lock file, temporaries of outputs, empty run folders).
+void check_run_directory(const std::filesystem::path& directory, bool force);
+
+/// Removes the files of an old run from `directory` (is_run_output; nothing else of the
+/// user's), for `--force`. Returns how many. Throws InputError if one cannot be removed.
+int remove_run_outputs(const std::filesystem::path& directory);
+
+/// A new run's directory: check_run_directory, then writable (InputError if not), the old run's
+/// outputs removed (with `force`), fields/ and samples/ created.
 void prepare_run_directory(const std::filesystem::path& directory, bool force);
+
+/// A restart's directory: throws InputError unless it and its run folders are writable.
+void check_run_directory_writable(const std::filesystem::path& directory);
 
 /// Removes the files of `directory`/`folder` whose names end in `extension` and that are not
 /// among `listed` (paths relative to `directory`, as in a .pvd): the frames a run wrote after

@@ -11,6 +11,7 @@
 #include "fddem/io/run_directory.hpp"
 #include "fddem/run/body_snapshot.hpp"
 #include "fddem/run/line_samples.hpp"
+#include "fddem/run/memory_estimate.hpp"
 #include "fddem/run/output_schedule.hpp"
 #include "fddem/run/run_messages.hpp"
 #include "fddem/run/run_summary.hpp"
@@ -34,16 +35,15 @@ Driver<Dim>::Driver(const CaseConfig& config, fs::path directory, RunMonitor& mo
 template <int Dim>
 RunResult Driver<Dim>::start(bool overwrite)
 {
+    // A forced rerun removes the old run's outputs: its checkpoints for a later --restart to
+    // find, its summary.json and frames that the new run would not replace.
     prepare_run_directory(directory_, overwrite);
-    // A forced rerun must not leave the old run's checkpoints for a later --restart to find.
-    for (const CheckpointEntry& old : list_checkpoints(directory_)) {
-        fs::remove(old.path);
-    }
     write_file_atomically(directory_ / "case.toml", config_.as_run);
     outputs_.create();
     if (outputs_.has_bodies()) {
         outputs_.append_particles(sim_);
     }
+    monitor_.message(memory_message(config_, run_memory_limit(config_)));
     report_derived_values(config_, monitor_);
     outputs_.write_frame(sim_);
     record_.next_particle_time = config_.output.particle_interval;

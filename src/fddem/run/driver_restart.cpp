@@ -9,6 +9,8 @@
 #include "fddem/io/checkpoint.hpp"
 #include "fddem/io/checkpoint_files.hpp"
 #include "fddem/run/driver.hpp"
+#include "fddem/run/field_frames.hpp"
+#include "fddem/run/memory_estimate.hpp"
 #include "fddem/run/run_messages.hpp"
 
 #include <fmt/format.h>
@@ -85,6 +87,14 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
         return {RunResult::Outcome::completed, 0};
     }
     outputs_.check(record_);
+    // Frames the user deleted stay out of the .pvd collections (which must list only files
+    // that exist); later frames are numbered on from the last one listed.
+    for (auto* frames : {&record_.field_frames, &record_.particle_frames}) {
+        for (const std::string& file : drop_missing_frames(directory_, *frames)) {
+            monitor_.message("fddem: warning: " + file +
+                             ", a frame of the checkpoint, is missing; left out of its .pvd");
+        }
+    }
 
     // Nothing was written so far; from here on the run directory is brought back to the step.
     for (const Damaged& file : damaged) {
@@ -94,6 +104,7 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
         monitor_.message(fmt::format("fddem: checkpoint {} {}; set aside as {}", file.path.string(),
                                      file.reason, aside.filename().string()));
     }
+    monitor_.message(memory_message(config_, run_memory_limit(config_)));
     monitor_.message(fmt::format("fddem: restarting {} from step {} (t = {:g} s), {}",
                                  directory_.string(), clock.step, clock.time,
                                  used->path.filename().string()));

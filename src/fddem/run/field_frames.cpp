@@ -7,6 +7,7 @@
 
 #include <array>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace fddem {
@@ -42,7 +43,7 @@ template <int Dim>
 void write_frame(const Simulation<Dim>& sim, const fs::path& directory, PvdCollection& fields,
                  PvdCollection& particles)
 {
-    const std::size_t frame = fields.entries().size();
+    const std::size_t frame = next_frame_number(fields);
     const std::string name = fmt::format("fields/fields_{:06d}.vtr", frame);
     // Read-only access (sim is const): the mutable fluid() would invalidate the reusable
     // assembly and make the results depend on when outputs are written.
@@ -66,6 +67,31 @@ void write_frame(const Simulation<Dim>& sim, const fs::path& directory, PvdColle
     fs::create_directories(directory / "particles");
     write_vtp(directory / file, centres, radii, velocities, spins);
     particles.add(sim.clock().time, file);
+}
+
+std::size_t next_frame_number(const PvdCollection& fields)
+{
+    if (fields.entries().empty()) {
+        return 0;
+    }
+    const std::string& last = fields.entries().back().second; // fields/fields_NNNNNN.vtr
+    const std::size_t digits = last.rfind('_') + 1;
+    return std::stoul(last.substr(digits, last.rfind('.') - digits)) + 1;
+}
+
+std::vector<std::string> drop_missing_frames(const fs::path& directory,
+                                             std::vector<std::pair<double, std::string>>& frames)
+{
+    std::vector<std::string> missing;
+    std::erase_if(frames, [&](const std::pair<double, std::string>& frame) {
+        std::error_code error;
+        const bool is_missing = !fs::exists(directory / frame.second, error);
+        if (is_missing) {
+            missing.push_back(frame.second);
+        }
+        return is_missing;
+    });
+    return missing;
 }
 
 template void write_frame(const Simulation<2>&, const fs::path&, PvdCollection&, PvdCollection&);

@@ -4,6 +4,9 @@
 #include "fddem/core/errors.hpp"
 #include "fddem/io/case_reader.hpp"
 #include "fddem/io/checkpoint_files.hpp"
+#include "fddem/io/run_directory.hpp"
+#include "fddem/io/run_lock.hpp"
+#include "fddem/run/memory_estimate.hpp"
 
 #include <system_error>
 
@@ -18,6 +21,8 @@ template <class Go>
 RunResult drive(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
                 const Go& go)
 {
+    // Before anything is allocated: a grid that does not fit stops here (exit status 2).
+    check_run_memory(config, run_memory_limit(config));
     if (config.domain.dimension == 2) {
         Driver<2> driver(config, directory, monitor);
         return go(driver);
@@ -31,8 +36,15 @@ RunResult drive(const CaseConfig& config, const fs::path& directory, RunMonitor&
 RunResult run_case(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
                    bool overwrite)
 {
-    return drive(config, directory, monitor,
-                 [overwrite](auto& driver) { return driver.start(overwrite); });
+    std::error_code error;
+    if (fs::is_directory(directory, error)) {
+        check_unlocked(directory); // before "not empty": the process that holds it is the news
+    }
+    check_run_directory(directory, overwrite);
+    return drive(config, directory, monitor, [&](auto& driver) {
+        const RunLock lock(directory);
+        return driver.start(overwrite);
+    });
 }
 
 CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::string>& overrides)
@@ -48,6 +60,7 @@ CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::s
         throw InputError(case_file.string(), 0, "",
                          "cannot restart: missing (not an fddem run directory?)");
     }
+    check_unlocked(directory);
     CaseConfig config = read_case(case_file.string(), overrides);
     if (list_checkpoints(directory).empty()) {
         throw InputError(checkpoint_directory(directory).string(), 0, "",
@@ -60,6 +73,8 @@ CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::s
 RunResult restart_run(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
                       bool rewrite_case)
 {
+    const RunLock lock(directory);
+    check_run_directory_writable(directory);
     return drive(config, directory, monitor,
                  [rewrite_case](auto& driver) { return driver.resume(rewrite_case); });
 }

@@ -15,9 +15,10 @@
 
 namespace fddem {
 
-/// A new run of `config` in `directory`: the directory is created (it must not hold files,
-/// unless `overwrite`: then those of the old run are replaced and its checkpoints removed), the
-/// initial outputs written, and the case stepped to its end with outputs and checkpoints on
+/// A new run of `config` in `directory`: the memory estimate said (and a run that would not fit
+/// refused), the directory locked against other processes (io/run_lock.hpp) and created (it must
+/// not hold files, unless `overwrite`: then the old run's outputs are removed, and nothing else),
+/// the initial outputs written, and the case stepped to its end with outputs and checkpoints on
 /// their schedule. A numerical failure stops the run at the last good step, with its outputs
 /// closed and a checkpoint of it; so does an interrupt from the monitor.
 RunResult run_case(const CaseConfig& config, const std::filesystem::path& directory,
@@ -30,7 +31,8 @@ RunResult run_case(const CaseConfig& config, const std::filesystem::path& direct
                                            const std::vector<std::string>& overrides);
 
 /// Continues the run in `directory` (`fddem run --restart`) with `config` (read_restart_case):
-/// its newest usable checkpoint restored, its outputs cut back to that step, and the case
+/// the directory locked and checked writable, the memory estimate said, before any work; its
+/// newest usable checkpoint restored, its outputs cut back to that step, and the case
 /// stepped to its end as run_case does. With `rewrite_case` (the case was changed by
 /// overrides), case.toml is written anew. A run already at the end of its case is left as it
 /// is (`completed`).

@@ -12,6 +12,8 @@ const char* signal_name(int signal) noexcept
         return "SIGINT";
     case SIGTERM:
         return "SIGTERM";
+    case SIGHUP:
+        return "SIGHUP";
     default:
         return "a signal";
     }

@@ -27,12 +27,13 @@ public:
     virtual void step_done(long /*step*/, double /*time*/, int /*outer_iterations*/) {}
     /// The time loop has ended (the closing outputs and the last message follow).
     virtual void loop_ended() {}
-    /// Asked after every step that does not end the run: a signal number (SIGINT, SIGTERM)
+    /// Asked after every step that does not end the run: a signal number (SIGINT, SIGTERM, SIGHUP)
     /// stops the run after a checkpoint; 0 lets it go on.
     [[nodiscard]] virtual int pending_interrupt() { return 0; }
 };
 
-/// "SIGINT", "SIGTERM" or "a signal": how summary.json and the messages name an interrupt.
+/// "SIGINT", "SIGTERM", "SIGHUP" or "a signal": how summary.json and the messages name an
+/// interrupt.
 [[nodiscard]] const char* signal_name(int signal) noexcept;
 
 } // namespace fddem

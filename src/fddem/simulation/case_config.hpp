@@ -190,6 +190,12 @@ struct CheckpointConfig {
     int keep = 2;               ///< newest checkpoints kept
 };
 
+/// [run]
+struct RunConfig {
+    std::optional<double>
+        max_memory; ///< refuse a run estimated above this [B]; none: the machine's
+};
+
 struct CaseConfig {
     std::string source_file; ///< the case file path, for messages
     std::string as_run;      ///< the whole case as TOML, defaults and overrides filled in
@@ -209,6 +215,7 @@ struct CaseConfig {
     NondimensionalConfig nondimensional;
     OutputConfig output;
     CheckpointConfig checkpoint;
+    RunConfig run;
 };
 
 } // namespace fddem

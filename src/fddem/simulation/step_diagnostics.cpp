@@ -114,6 +114,10 @@ std::string locate_non_finite(const MacGrid<Dim>& grid, const FluidState<Dim>& s
             }
         });
     }
+    if (where.empty()) {
+        return "the momentum residual is not finite, with the velocity, the body force and the "
+               "pressure finite and the fluid at rest (|u| = 0 everywhere)";
+    }
     return fmt::format("the momentum residual is not finite (largest |u| {:.3g} at ({}))", fastest,
                        where);
 }

@@ -55,7 +55,7 @@ TEST(MarkerPlacement, ABodyOutOfTheBoxIsANumericalErrorNamingIt)
         place_markers<2>(bodies, unit_box(), AnyKernel{HatKernel{}}, 12, 0.3);
         FAIL() << "no error";
     } catch (const NumericalError& e) {
-        EXPECT_EQ(e.where(), "body 7");
+        EXPECT_EQ(e.where(), "body 8"); // id 7 is the eighth body, as --set bodies.8 names it
         EXPECT_EQ(e.step(), 12);
     }
     bodies[1].centre = Vec<2>(0.5, std::nan(""));

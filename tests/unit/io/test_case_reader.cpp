@@ -411,14 +411,14 @@ std::vector<BadCase> bad_cases()
          f,
          25,
          "bodies.position",
-         "body 1 overlaps body 0"},
+         "body 2 overlaps body 1"},
         {"body_outside_box",
          v + replace(body, "position = [0.5, 1.0]", "position = [0.9, 1.0]"),
          {},
          f,
          21,
          "bodies.position",
-         "reaches outside the box"},
+         "body 1 reaches outside the box"},
         {"body_too_small_for_markers",
          v + replace(body, "diameter = 0.5", "diameter = 0.1"),
          {},
@@ -697,6 +697,65 @@ std::vector<BadCase> bad_cases()
          "contact",
          "not a finite positive number: the contact parameters and the lightest free body's mass "
          "(1.9635e+299 kg) are out of any usable range"},
+        // Issue 17: integers beyond 2^53 read as 0, a box of zero floating-point width, an
+        // end time between steps, 10^12 steps, and --set values that hid their fault.
+        {"integer_without_exact_double",
+         replace(v, "density = 1.0", "density = 9007199254740993"),
+         {},
+         f,
+         9,
+         "fluid.density",
+         "the integer 9007199254740993 has no exact floating-point value"},
+        {"integer_without_exact_double_in_a_vector",
+         replace(v, "cells = [16, 32]", "cells = [16, 32]\norigin = [9007199254740993, 0]"),
+         {},
+         f,
+         6,
+         "domain.origin",
+         "the integer 9007199254740993 has no exact floating-point value"},
+        {"box_cells_not_representable",
+         replace(v, "cells = [16, 32]", "cells = [16, 32]\norigin = [1e308, 0]"),
+         {},
+         f,
+         6,
+         "domain.origin",
+         "the box spans [1e+308, 1e+308] on axis 0 in cells 0.0625 wide, where doubles are "
+         "2e+292 apart"},
+        {"end_between_steps",
+         replace(v, "end = 1.0", "end = 1.005"),
+         {},
+         f,
+         13,
+         "time.end",
+         "1.005 s is not a whole number of time steps of 0.01 s (100.5 steps)"},
+        {"more_steps_than_max_steps",
+         replace(v, "dt = 0.01", "dt = 1e-12"),
+         {},
+         f,
+         12,
+         "time.dt",
+         "time.end / time.dt = 1 / 1e-12 = 1e+12 steps, more than time.max_steps = 100000000"},
+        {"set_with_a_newline",
+         v,
+         {"time.dt=0.004\ntime.end=5"},
+         "--set",
+         0,
+         "time.dt",
+         "'time.dt=0.004\\ntime.end=5' holds a control character (byte 14 of it, 0x0a)"},
+        {"set_unknown_section",
+         v,
+         {"nosuch.key=1"},
+         "--set",
+         0,
+         "nosuch",
+         "unknown section 'nosuch'"},
+        {"set_number_out_of_range",
+         v,
+         {"time.dt=1e400"},
+         "--set",
+         0,
+         "time.dt",
+         "cannot read the value '1e400'"},
     };
 }
 
@@ -865,6 +924,26 @@ TEST(CaseReader, HertzMindlinSurfacesImpactSpeedAndSubstepsAreDerived)
 TEST(CaseReader, MissingFileIsAnInputError)
 {
     EXPECT_THROW((void)read_case("/nonexistent/case.toml"), InputError);
+}
+
+TEST(CaseReader, ADirectoryIsNotACaseFile)
+{
+    // Issue 17: a directory read as an empty case and was reported as "missing domain.size".
+    try {
+        (void)read_case("/tmp");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.formatted(), "/tmp: is a directory, not a case file (give the case's .toml)");
+    }
+}
+
+TEST(CaseReader, ACaseFileNameWithANewlineStaysOnItsSourceLine)
+{
+    // Issue 17: the name broke the case as run's "# Source:" comment, and --restart read the
+    // rest of it as TOML.
+    const CaseConfig c = read_case_string(valid_case, "runs/a\nb\\c\x01.toml");
+    EXPECT_EQ(fddem::test::lines_of(c.as_run).at(1), "# Source: runs/a\\nb\\\\c\\x01.toml");
+    EXPECT_EQ(case_body(read_case_string(c.as_run, "case.toml").as_run), case_body(c.as_run));
 }
 
 TEST(CaseReader, EditDistanceCountsSingleEdits)

@@ -309,7 +309,8 @@ TEST(CheckpointRestart, FrictionalDisksKeepTheirTangentialSpringsBitForBit)
 TEST(CheckpointRestart, SphereOnTheFloorContinuesBitForBit3D)
 {
     const CaseConfig config = read_case_string(falling_balls_case(3), "test:sphere");
-    const int in_contact = expect_bit_identical_continuation<3>(config, 20, 4);
+    // Step 18: in the first bounce with the mirror-symmetric shells of issue 17.
+    const int in_contact = expect_bit_identical_continuation<3>(config, 18, 4);
     EXPECT_GT(in_contact, 0) << "the checkpoint should catch a contact in flight";
 }
 
@@ -451,6 +452,16 @@ TEST(CheckpointFiles, ListedNewestFirstAndPrunedToTheNewest)
     EXPECT_TRUE(fs::exists(checkpoint_directory(run) / "checkpoint_0000000300.ckpt.damaged"));
     EXPECT_TRUE(list_checkpoints(run / "nothing_here").empty());
     fs::remove_all(run);
+}
+
+TEST(CheckpointFormat, DocsOutputFilesStateTheVersionTheProgramWrites)
+{
+    // Issue 17: docs/output-files.md said version 2 while fddem wrote 3.
+    const std::string docs =
+        test::file_contents(std::string(FDDEM_SOURCE_DIR) + "/docs/output-files.md");
+    const std::string stated = "Format (version " + std::to_string(checkpoint_format_version);
+    EXPECT_NE(docs.find(stated), std::string::npos)
+        << "docs/output-files.md does not say \"" << stated << "\"";
 }
 
 } // namespace

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// How much memory a run will take, known before anything is allocated: printed at the start of
+/// every run (users size their jobs by it), and a run that would not fit stops with exit status
+/// 2 and the estimate instead of failing in the allocator (std::bad_alloc, exit 1) or being
+/// killed by the kernel.
+
+#include "fddem/simulation/case_config.hpp"
+
+#include <optional>
+#include <string>
+
+namespace fddem {
+
+/// The estimated peak resident memory of a run of `config` [B]: a fixed part plus a measured
+/// amount per cell and per marker (memory_estimate.cpp says how it was measured). Pure; no
+/// overflow for any grid (the cell count is a double).
+[[nodiscard]] double estimate_run_memory(const CaseConfig& config);
+
+/// The memory this process may use [B]: the machine's physical memory, or its cgroup's limit
+/// where that is lower; none if neither can be read.
+[[nodiscard]] std::optional<double> available_memory();
+
+/// The most a run of `config` may take [B]: run.max_memory if given, else available_memory().
+[[nodiscard]] std::optional<double> run_memory_limit(const CaseConfig& config);
+
+/// "1.23 GiB", "512 MiB": a size for messages.
+[[nodiscard]] std::string memory_text(double bytes);
+
+/// Before anything is allocated: throws InputError (naming domain.cells, with the estimate)
+/// when the estimate exceeds `limit` [B].
+void check_run_memory(const CaseConfig& config, std::optional<double> limit);
+
+/// "fddem: memory estimate 1.2 GiB for 512 × 512 cells (limit 15.6 GiB)", which every run
+/// prints at its start.
+[[nodiscard]] std::string memory_message(const CaseConfig& config, std::optional<double> limit);
+
+} // namespace fddem
