@@ -38,12 +38,17 @@ def pyplot():
     return plt
 
 
-def _panel_size(run, width=4.2):
-    """(width, height) in inches of one panel showing the whole box (its in-plane extent)."""
+def _panel_size(run, width=4.2, widest=10.0, tallest=8.0):
+    """(width, height) in inches of a panel showing the box's display plane: `width` wide
+    (at most `tallest` high) when the box is taller than wide, else wide enough for a
+    2.2-inch height (at most `widest`)."""
     a, b = display_axes(run)
     aspect = run.size[b] / run.size[a]
-    height = np.clip(width * aspect, 2.2, 8.0)
-    return height / aspect if height / aspect < width else width, height
+    if aspect >= 1.0:
+        height = min(width * aspect, tallest)
+        return height / aspect, height
+    width = min(max(width, 2.2 / aspect), widest)
+    return width, width * aspect
 
 
 def display_axes(run):
@@ -605,7 +610,7 @@ def save(fig, path_without_extension, formats):
     paths = []
     for extension in formats:
         path = f"{path_without_extension}.{extension}"
-        fig.savefig(path, bbox_inches="tight")
+        fig.savefig(path)
         paths.append(path)
     pyplot().close(fig)
     return paths

@@ -54,7 +54,9 @@ def write_movie(run, path, fps=None, dpi=110, progress=True):
     names = "xyz"
 
     width, height = figures._panel_size(run, 5.0)
-    fig, ax = plt.subplots(figsize=(width + 1.6, height + 0.7))
+    # H.264 in yuv420p needs even pixel counts.
+    pixels = [2 * round(inches * dpi / 2) for inches in (width + 1.6, height + 0.7)]
+    fig, ax = plt.subplots(figsize=(pixels[0] / dpi, pixels[1] / dpi), dpi=dpi)
     plane, cuts, time = planes[0]
     image = plots.flow_field(ax, plane, run.units, (), vmax=vmax, streamlines=False)
     fig.colorbar(image, ax=ax, shrink=0.85, label=run.units.label("|u|", "velocity"))

@@ -164,7 +164,7 @@ def trajectories(ax, histories, colours, axes, origin, size, units, radii=None):
     a, b = axes
     names = {0: "x", 1: "y", 2: "z"}
     for body, h in histories.items():
-        ax.plot(h[names[a]], h[names[b]], color=colours[body], lw=0.8)
+        ax.plot(h[names[a]], h[names[b]], color=colours[body], lw=0.8, label=f"body {body}")
         ax.plot(h[names[a]][0], h[names[b]][0], "o", ms=2.5, color=colours[body])
         if radii is not None:
             ax.add_patch(Circle((h[names[a]][-1], h[names[b]][-1]), radii[body],
