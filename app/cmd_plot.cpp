@@ -43,6 +43,13 @@ int plot_command(const PlotOptions& options)
             arguments.push_back(std::to_string(t));
         }
     }
+    if (!options.only.empty()) {
+        arguments.emplace_back("--only");
+        arguments.insert(arguments.end(), options.only.begin(), options.only.end());
+    }
+    if (options.dpi > 0) {
+        arguments.insert(arguments.end(), {"--dpi", std::to_string(options.dpi)});
+    }
     return run_child(arguments, package->string());
 }
 

@@ -32,10 +32,12 @@ struct ValidateOptions {
 
 struct PlotOptions {
     std::string run_directory;
-    std::string output_directory; ///< empty: RUN_DIR/plots
-    std::vector<double> times;    ///< of the flow snapshots; empty: spread over the run
-    bool movie = false;           ///< also OUT/movie.mp4
-    bool svg = false;             ///< each figure also as SVG
+    std::string output_directory;  ///< empty: RUN_DIR/plots
+    std::vector<double> times;     ///< of the flow snapshots; empty: spread over the run
+    std::vector<std::string> only; ///< these figures only; empty: all that fit
+    int dpi = 0;                   ///< PNG resolution; 0: the package's default
+    bool movie = false;            ///< also OUT/movie.mp4
+    bool svg = false;              ///< each figure also as SVG
     bool quiet = false;
 };
 

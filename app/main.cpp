@@ -91,6 +91,10 @@ int main(int argc, char** argv)
     plot_cmd->add_flag("--movie", plot.movie, "Also OUT/movie.mp4 of the flow and bodies (ffmpeg)");
     plot_cmd->add_flag("--svg", plot.svg, "Each figure also as SVG");
     plot_cmd->add_option("--times", plot.times, "Times of the flow snapshots (default: spread)");
+    plot_cmd->add_option("--only", plot.only,
+                         "Only these figures (overview, solver, snapshots, …)");
+    plot_cmd->add_option("--dpi", plot.dpi, "PNG resolution (default 130)")
+        ->check(CLI::Range(20, 1200));
     plot_cmd->add_flag("-q,--quiet", plot.quiet, "No list of files, no progress bar");
 
     try {

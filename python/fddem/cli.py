@@ -32,6 +32,7 @@ def parser():
     p.add_argument("--movie", action="store_true", help="also write OUT/movie.mp4 (needs ffmpeg)")
     p.add_argument("--fps", type=int, help="movie frames per second (default: about 8 s long)")
     p.add_argument("--svg", action="store_true", help="also write each figure as SVG")
+    p.add_argument("--dpi", type=int, help="PNG resolution (default 130)")
     p.add_argument("--times", type=float, nargs="+", metavar="T",
                    help="times of the flow snapshots (default: up to six spread over the run)")
     p.add_argument("--only", nargs="+", metavar="NAME",
@@ -65,7 +66,8 @@ def plot_command(argv):
     out = options.output or os.path.join(options.run, "plots")
     formats = ("png", "svg") if options.svg else ("png",)
     report = (lambda path: None) if options.quiet else (lambda path: print(path))
-    written = figures.plot_run(run, out, formats, options.times, options.only, report)
+    written = figures.plot_run(run, out, formats, options.times, options.only, report,
+                               options.dpi)
     if options.movie:
         path = os.path.join(out, "movie.mp4")
         try:
@@ -78,8 +80,8 @@ def plot_command(argv):
             print(f"movie: {frames} frames", file=sys.stderr)
     install_paraview_script(options.run)
     if not options.quiet:
-        print(f"fddem plot: {len(written)} files in {out} ({time.monotonic() - start:.1f} s)",
-              file=sys.stderr)
+        files = f"{len(written)} file" + ("" if len(written) == 1 else "s")
+        print(f"fddem plot: {files} in {out} ({time.monotonic() - start:.1f} s)", file=sys.stderr)
     return 0
 
 

@@ -123,7 +123,9 @@ def overview_figure(run):
     _colourbar(fig, image, axes[0], run)
     where = "" if run.dimension == 2 else (
         f", plane {slices.AXIS_NAMES[plane['normal_axis']]} = {plane['position']:.3g}")
-    axes[0].set_title(f"|u| and streamlines at t = {time:.4g} {run.units.unit('time')}{where}")
+    when = ("at the steady state" if run.is_steady
+            else f"at t = {time:.4g} {run.units.unit('time')}")
+    axes[0].set_title(f"|u| and streamlines {when}{where}")
     if not run.has_bodies:
         _centrelines_panel(run, axes[1])
     elif run.has_free_bodies:
@@ -521,7 +523,9 @@ def forces_panel(ax, run, histories=None):
     else:
         ax.set_ylabel(run.units.label("hydrodynamic force", "force"))
     ax.set_xlabel(run.units.label("t", "time"))
-    ax.set_title("hydrodynamic force on the bodies")
+    ax.set_title("hydrodynamic force on the bodies" + (
+        "" if speed is not None else " (solid F_x, dashed F_y" + (
+            ", dotted F_z)" if run.dimension == 3 else ")")))
     if len(histories) <= 4:
         ax.legend(ncol=2 if len(ax.get_lines()) > 6 else 1)
 
@@ -605,18 +609,18 @@ def figure_makers(run, times=None):
     ]
 
 
-def save(fig, path_without_extension, formats):
-    """Write `fig` in each format; returns the paths."""
+def save(fig, path_without_extension, formats, dpi=None):
+    """Write `fig` in each format (PNG at `dpi`, default STYLE's); returns the paths."""
     paths = []
     for extension in formats:
         path = f"{path_without_extension}.{extension}"
-        fig.savefig(path)
+        fig.savefig(path, dpi=dpi or STYLE["savefig.dpi"])
         paths.append(path)
     pyplot().close(fig)
     return paths
 
 
-def plot_run(run, out_dir, formats=("png",), times=None, only=None, report=print):
+def plot_run(run, out_dir, formats=("png",), times=None, only=None, report=print, dpi=None):
     """Write every figure that fits `run` into `out_dir`; returns the paths written."""
     os.makedirs(out_dir, exist_ok=True)
     written = []
@@ -626,7 +630,7 @@ def plot_run(run, out_dir, formats=("png",), times=None, only=None, report=print
         fig = make()
         if fig is None:
             continue
-        paths = save(fig, os.path.join(out_dir, name), formats)
+        paths = save(fig, os.path.join(out_dir, name), formats, dpi)
         for path in paths:
             report(path)
         written += paths

@@ -35,7 +35,7 @@ class ProgressBar:
             self.stream.write(text + "\n")
 
 
-def write_movie(run, path, fps=None, dpi=110, progress=True):
+def write_movie(run, path, fps=None, dpi=140, progress=True):
     """Render the run's field frames to `path` (MP4). Returns the number of frames."""
     if shutil.which("ffmpeg") is None:
         raise RuntimeError("--movie needs ffmpeg (Debian package ffmpeg; tools/install-deps.sh)")
@@ -47,7 +47,9 @@ def write_movie(run, path, fps=None, dpi=110, progress=True):
 
     normal = figures.display_normal(run)
     planes = [figures.plane_at_frame(run, k, normal) for k in range(n_frames)]
-    vmax = max(float(np.max(p["speed"])) for p, _, _ in planes) or 1.0
+    # One colour scale for the whole movie, from the frames' 99.5th percentiles: a brief spike
+    # (a collision squeezing the fluid out of a gap) must not darken every other frame.
+    vmax = max(float(np.percentile(p["speed"], 99.5)) for p, _, _ in planes) or 1.0
     histories = run.body_histories()
     colours = plots.body_colours(sorted(histories))
     a, b = planes[0][0]["axes"]
@@ -59,11 +61,11 @@ def write_movie(run, path, fps=None, dpi=110, progress=True):
     fig, ax = plt.subplots(figsize=(pixels[0] / dpi, pixels[1] / dpi), dpi=dpi)
     plane, cuts, time = planes[0]
     image = plots.flow_field(ax, plane, run.units, (), vmax=vmax, streamlines=False)
-    fig.colorbar(image, ax=ax, shrink=0.85, label=run.units.label("|u|", "velocity"))
-    trails = {body: ax.plot([], [], color=colours[body], lw=0.8, alpha=0.9)[0]
+    fig.colorbar(image, ax=ax, shrink=0.85, extend="max",
+                 label=run.units.label("|u|", "velocity"))
+    trails = {body: ax.plot([], [], color=colours[body], lw=0.6, alpha=0.7)[0]
               for body in histories}
-    title = ax.set_title("")
-    fig.suptitle(run.title, fontsize=9)
+    title = ax.set_title(run.title + "\n", fontsize=9)
     fig.tight_layout()
     patches = []
     fps = fps or int(np.clip(round(n_frames / 8.0), 4, 25))  # about 8 s, 4-25 frames/s
@@ -81,7 +83,7 @@ def write_movie(run, path, fps=None, dpi=110, progress=True):
                 trails[body].set_data(h[names[a]][shown], h[names[b]][shown])
             where = "" if run.dimension == 2 else (
                 f", plane {slices.AXIS_NAMES[normal]} = {plane['position']:.3g}")
-            title.set_text(f"t = {time:.3f} {run.units.unit('time')}{where}")
+            title.set_text(f"{run.title}\nt = {time:.3f} {run.units.unit('time')}{where}")
             writer.grab_frame()
             if bar:
                 bar.update(k + 1)
