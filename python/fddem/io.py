@@ -38,14 +38,24 @@ def _to_frame(columns, as_frame):
     return pandas.DataFrame(columns)
 
 
+# Columns that count things: integers in a DataFrame (numpy arrays stay float, as written).
+INTEGER_COLUMNS = {"id", "step", "outer_iterations", "total_outer_iterations", "is_converged"}
+
+
 def read_csv_columns(path, as_frame=False):
-    """A CSV file with a header line: dict column name -> float array (or a DataFrame)."""
+    """A CSV file with a header line: dict column name -> float array (or a DataFrame, whose
+    counting columns, INTEGER_COLUMNS, are integers)."""
     with open(path, newline="") as f:
         reader = csv.reader(f)
         header = next(reader)
         rows = [[float(x) for x in row] for row in reader if row]
     data = np.array(rows, dtype=float).reshape(-1, len(header))
-    return _to_frame({name: data[:, k] for k, name in enumerate(header)}, as_frame)
+    columns = {name: data[:, k] for k, name in enumerate(header)}
+    frame = _to_frame(columns, as_frame)
+    if frame is not columns:
+        for name in INTEGER_COLUMNS.intersection(header):
+            frame[name] = frame[name].astype(int)
+    return frame
 
 
 def read_solver(run_dir, as_frame=False):
