@@ -5,28 +5,14 @@
 // script in the source tree fddem was built from and runs it on this very program.
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 
 #include "commands.hpp"
+#include "python_program.hpp"
 
 namespace fddem::app {
-
-namespace {
-
-/// The path of the running program (Linux: /proc/self/exe).
-std::string self_path()
-{
-    std::error_code error;
-    const std::filesystem::path path = std::filesystem::read_symlink("/proc/self/exe", error);
-    return error ? std::string("fddem") : path.string();
-}
-
-} // namespace
 
 int validate_command(const ValidateOptions& options)
 {
@@ -40,28 +26,12 @@ int validate_command(const ValidateOptions& options)
         return exit_bad_input;
     }
     std::vector<std::string> arguments = {
-        "/usr/bin/python3",      script.string(), "--fddem", self_path(), "-o",
+        python_interpreter(),    script.string(), "--fddem", self_path(), "-o",
         options.output_directory};
     if (options.quick) {
         arguments.emplace_back("--quick");
     }
-    std::vector<char*> argv;
-    for (std::string& a : arguments) {
-        argv.push_back(a.data());
-    }
-    argv.push_back(nullptr);
-    const pid_t child = ::fork();
-    if (child == 0) {
-        ::execv(argv[0], argv.data());
-        std::perror("fddem: validate: cannot run /usr/bin/python3");
-        std::_Exit(exit_bad_input);
-    }
-    int status = 0;
-    if (child < 0 || ::waitpid(child, &status, 0) < 0) {
-        std::perror("fddem: validate");
-        return exit_internal_error;
-    }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : exit_internal_error;
+    return run_child(arguments);
 }
 
 } // namespace fddem::app

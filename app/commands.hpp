@@ -30,7 +30,20 @@ struct ValidateOptions {
     bool quick = false;                          ///< the CI-sized set (a few minutes)
 };
 
+struct PlotOptions {
+    std::string run_directory;
+    std::string output_directory;  ///< empty: RUN_DIR/plots
+    std::vector<double> times;     ///< of the flow snapshots; empty: spread over the run
+    std::vector<std::string> only; ///< these figures only; empty: all that fit
+    int dpi = 0;                   ///< PNG resolution; 0: the package's default
+    bool movie = false;            ///< also OUT/movie.mp4
+    bool svg = false;              ///< each figure also as SVG
+    bool quiet = false;
+};
+
 int run_command(const RunOptions& options);
+/// Runs the fddem Python package's `plot` on a run directory; 2 if it is not one.
+int plot_command(const PlotOptions& options);
 /// Runs tools/validate.py on this program; its exit status: 0 every check passes, 1 not.
 int validate_command(const ValidateOptions& options);
 int info_command(bool keys, bool markdown);

@@ -98,6 +98,22 @@ int main(int argc, char** argv)
     validate_cmd->add_option("-o,--output", validate.output_directory,
                              "Report directory (default: validation)");
 
+    PlotOptions plot;
+    CLI::App* plot_cmd = app.add_subcommand(
+        "plot", "Write the figures that fit a run (PNG, SVG) and with --movie an MP4 "
+                "(the fddem Python package; docs/plotting.md)");
+    plot_cmd->add_option("run", plot.run_directory, "Run directory")->required();
+    plot_cmd->add_option("-o,--output", plot.output_directory,
+                         "Figure directory (default: RUN_DIR/plots)");
+    plot_cmd->add_flag("--movie", plot.movie, "Also OUT/movie.mp4 of the flow and bodies (ffmpeg)");
+    plot_cmd->add_flag("--svg", plot.svg, "Each figure also as SVG");
+    plot_cmd->add_option("--times", plot.times, "Times of the flow snapshots (default: spread)");
+    plot_cmd->add_option("--only", plot.only,
+                         "Only these figures (overview, solver, snapshots, …)");
+    plot_cmd->add_option("--dpi", plot.dpi, "PNG resolution (default 130)")
+        ->check(CLI::Range(20, 1200));
+    plot_cmd->add_flag("-q,--quiet", plot.quiet, "No list of files, no progress bar");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -138,6 +154,9 @@ int main(int argc, char** argv)
         }
         if (*validate_cmd) {
             return validate_command(validate);
+        }
+        if (*plot_cmd) {
+            return plot_command(plot);
         }
         return info_command(keys, markdown);
     } catch (const fddem::InputError& e) {

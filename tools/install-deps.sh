@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian packages fddem needs to build, test, benchmark and plot.
+# Installs the Debian packages fddem needs to build, test, benchmark and plot (`fddem plot`:
+# numpy, matplotlib; ffmpeg for --movie; pandas, optional, for DataFrames from the fddem package).
 # Run as root on Debian 12 (bookworm). Safe to run again: apt-get skips what is present.
 set -euo pipefail
 packages=(
@@ -10,6 +11,7 @@ packages=(
     libfftw3-dev libhypre-dev libopenmpi-dev openmpi-bin zlib1g-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     python3 python3-numpy python3-matplotlib
+    ffmpeg python3-pandas
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -10,7 +10,6 @@ its reference, and writes OUT/report.md with a PNG per case (fddem against the r
 tolerance is what it is. Exit status 0 when every check passes, 1 otherwise.
 """
 import argparse
-import csv
 import math
 import os
 import subprocess
@@ -21,11 +20,14 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-sys.path.insert(0, HERE)
-import cylinder_wake  # noqa: E402
-import fddem_io  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "python"))
+from fddem import io as fddem_io  # noqa: E402
+from fddem import plots, references, uhlmann  # noqa: E402
+from fddem import wake as cylinder_wake  # noqa: E402
+from fddem.units import Units  # noqa: E402
 
-SHARED_UHLMANN = os.path.join(ROOT, "..", "shared", "reference", "digitized", "uhlmann_2005")
+SHARED_UHLMANN = references.uhlmann_directory()
+SI, CGS = Units("SI", 2), Units("CGS", 2)  # axis labels of the 2D cases checked here
 
 
 class Check:
@@ -40,25 +42,19 @@ class Check:
         self.plot = plot  # (run_dir, axes) -> None
 
 
-def read_xy(path):
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    return np.array([[float(v) for v in r] for r in rows[1:]])
-
-
 def centreline_deviation(run_dir, reference_dir):
-    ghia_u = read_xy(os.path.join(reference_dir, "ghia1982_u_vertical_centerline.csv"))
-    ghia_v = read_xy(os.path.join(reference_dir, "ghia1982_v_horizontal_centerline.csv"))
+    ghia = references.ghia(reference_dir)
     vertical = fddem_io.read_csv_columns(os.path.join(run_dir, "samples", "vertical_centerline.csv"))
     horizontal = fddem_io.read_csv_columns(os.path.join(run_dir, "samples", "horizontal_centerline.csv"))
-    du = np.max(np.abs(np.interp(ghia_u[:, 0], vertical["y"], vertical["u"]) - ghia_u[:, 1]))
-    dv = np.max(np.abs(np.interp(ghia_v[:, 0], horizontal["x"], horizontal["v"]) - ghia_v[:, 1]))
-    return du, dv, ghia_u, ghia_v, vertical, horizontal
+    (y, u), (x, v) = ghia["u"], ghia["v"]
+    du = np.max(np.abs(np.interp(y, vertical["y"], vertical["u"]) - u))
+    dv = np.max(np.abs(np.interp(x, horizontal["x"], horizontal["v"]) - v))
+    return du, dv, ghia, vertical, horizontal
 
 
 def cavity_check(name, re, cells, quick):
     case = f"cases/verification/cavity_re{re}/case.toml"
-    reference = os.path.join(ROOT, f"cases/verification/cavity_re{re}/reference")
+    reference = os.path.join(ROOT, f"cases/verification/cavity_re{re}")
 
     def evaluate(run_dir):
         du, dv, *_ = centreline_deviation(run_dir, reference)
@@ -68,13 +64,9 @@ def cavity_check(name, re, cells, quick):
                 ("max |v − Ghia| on y = 0.5", dv, 0.0, tolerance, source)]
 
     def plot(run_dir, axes):
-        _, _, ghia_u, ghia_v, vertical, horizontal = centreline_deviation(run_dir, reference)
-        axes.plot(vertical["u"], vertical["y"], label="fddem u(x = 0.5)")
-        axes.plot(ghia_u[:, 1], ghia_u[:, 0], "o", mfc="none", label="Ghia u")
-        axes.plot(horizontal["x"], horizontal["v"], label="fddem v(y = 0.5)")
-        axes.plot(ghia_v[:, 0], ghia_v[:, 1], "s", mfc="none", label="Ghia v")
-        axes.set_xlabel("u or x")
-        axes.set_ylabel("y or v")
+        _, _, ghia, vertical, horizontal = centreline_deviation(run_dir, reference)
+        plots.centrelines(axes, (vertical["y"], vertical["u"]), (horizontal["x"], horizontal["v"]),
+                          SI, ghia)
 
     return Check(name, case, [f"domain.cells=[{cells},{cells}]"], quick, evaluate, plot)
 
@@ -92,9 +84,8 @@ def settling_check(name, case, overrides, tolerance, quick):
 
     def plot(run_dir, axes):
         t, v = velocity(run_dir)
-        axes.plot(t, v, label="fddem")
-        axes.axhline(1.0, color="k", ls="--", label="analytic (Faxén)")
-        axes.set_xlabel("t")
+        plots.history(axes, t, v, "fddem", 1.0, "analytic (Faxén)")
+        axes.set_xlabel("t U_c / D")
         axes.set_ylabel("U/U_c")
 
     return Check(name, case, overrides, quick, evaluate, plot)
@@ -115,9 +106,8 @@ def towed_check(name, refinement, tolerance, quick):
 
     def plot(run_dir, axes):
         t, f = drag(run_dir)
-        axes.plot(t, f, label="fddem")
-        axes.axhline(faxen, color="k", ls="--", label="Faxén")
-        axes.set_xlabel("t")
+        plots.history(axes, t, f, "fddem", faxen, "Faxén")
+        axes.set_xlabel(SI.label("t", "time"))
         axes.set_ylabel("F/(μU)")
 
     cells = f"domain.cells=[{64 * refinement},{320 * refinement}]"
@@ -125,15 +115,11 @@ def towed_check(name, refinement, tolerance, quick):
                  evaluate, plot)
 
 
-def plot_wake_axis(run_dir, axes, x_rear, label, band, band_label, xlabel, ylabel):
-    """u along the wake axis behind a cylinder (samples/wake_axis.csv), x from its rear, with
-    the reference recirculation lengths shaded."""
+def plot_wake_axis(run_dir, axes, x_rear, band, band_label):
+    """u along the wake axis behind a cylinder (samples/wake_axis.csv) from its rear, with the
+    reference recirculation lengths shaded."""
     axis = fddem_io.read_csv_columns(os.path.join(run_dir, "samples", "wake_axis.csv"))
-    axes.plot(axis["x"] - x_rear, axis["u"], label=label)
-    axes.axvspan(band[0], band[1], color="k", alpha=0.3, label=band_label)
-    axes.axhline(0.0, color="k", lw=0.5)
-    axes.set_xlabel(xlabel)
-    axes.set_ylabel(ylabel)
+    plots.wake_axis(axes, axis["x"], axis["u"], x_rear, SI, band, band_label)
 
 
 def schafer_turek_check(name, cells, quick):
@@ -150,8 +136,7 @@ def schafer_turek_check(name, cells, quick):
                 ("Δp [Pa]", w["dp"], 0.1174, 0.03 * 0.1174, source)]
 
     def plot(run_dir, axes):
-        plot_wake_axis(run_dir, axes, 0.25, "fddem u on y = 0.2", (0.0842, 0.0852),
-                       "L_a, Schäfer & Turek (1996)", "x − x_rear [m]", "u [m/s]")
+        plot_wake_axis(run_dir, axes, 0.25, (0.0842, 0.0852), "L_a, Schäfer & Turek (1996)")
 
     return Check(name, "cases/verification/cylinder_re20/case.toml", [f"domain.cells={cells}"], quick,
                  evaluate, plot)
@@ -176,8 +161,7 @@ def re40_check(name, cells, quick):
                  RE40_LENGTH_TOLERANCE, source)]
 
     def plot(run_dir, axes):
-        plot_wake_axis(run_dir, axes, 8.5, "fddem u on the axis", (2.24, 2.345),
-                       "L/D, Fornberg – Dennis & Chang", "(x − x_rear)/D", "u/U∞")
+        plot_wake_axis(run_dir, axes, 8.5, (2.24, 2.345), "L/D, Fornberg – Dennis & Chang")
 
     return Check(name, "cases/verification/cylinder_re40/case.toml", [f"domain.cells={cells}"], quick,
                  evaluate, plot)
@@ -197,10 +181,10 @@ def landing_check(name, overrides, quick):
 
     def plot(run_dir, axes):
         p = fddem_io.read_particles(run_dir)[0]
-        axes.plot(p["time"], p["y"], label="fddem centre height")
-        axes.axhline(0.125, color="k", ls="--", label="resting on the floor (y = r)")
-        axes.set_xlabel("t")
-        axes.set_ylabel("y")
+        plots.history(axes, p["time"], p["y"], "fddem centre height", 0.125,
+                      "resting on the floor (y = r)")
+        axes.set_xlabel(CGS.label("t", "time"))
+        axes.set_ylabel(CGS.label("y", "length"))
 
     return Check(name, "cases/paper/fig05_disk_in_box/case.toml", overrides, quick, evaluate, plot)
 
@@ -218,13 +202,9 @@ def pile_check(name, case, overlap_bound, quick):
                 ("mean final speed", float(np.mean([s for *_, s in last])), 0.0, 1e-3, "settled")]
 
     def plot(run_dir, axes):
-        for p in fddem_io.read_particles(run_dir).values():
-            axes.plot(p["x"], p["y"], lw=0.7)
-        axes.set_xlim(0, 2)
-        axes.set_ylim(0, 6)
-        axes.set_aspect("equal")
-        axes.set_xlabel("x")
-        axes.set_ylabel("y")
+        particles = fddem_io.read_particles(run_dir)
+        plots.trajectories(axes, particles, plots.body_colours(sorted(particles)), (0, 1),
+                           (0.0, 0.0), (2.0, 6.0), CGS)
 
     return Check(name, case, [], quick, evaluate, plot)
 
@@ -232,8 +212,7 @@ def pile_check(name, case, overlap_bound, quick):
 def uhlmann_check(name):
     def deviation(run_dir):
         p = fddem_io.read_particles(run_dir)
-        ref = np.loadtxt(os.path.join(SHARED_UHLMANN, "Uhlmann2005-fig6b-leading-particle.csv"))
-        ref = ref[np.argsort(ref[:, 0])]
+        ref = uhlmann.load_reference(SHARED_UHLMANN, "fig6b", "leading")
         drafting = ref[:, 0] <= 0.15
         mine = np.interp(ref[drafting, 0], p[1]["time"], -p[1]["v"])
         return ref, drafting, mine
@@ -248,7 +227,7 @@ def uhlmann_check(name):
         p = fddem_io.read_particles(run_dir)
         ref, *_ = deviation(run_dir)
         axes.plot(p[1]["time"], -p[1]["v"], label="fddem, leading")
-        axes.plot(ref[:, 0], ref[:, 1], "o", ms=3, mfc="none", label="Uhlmann 2005")
+        axes.plot(ref[:, 0], ref[:, 1], **plots.REFERENCE_STYLE, label="Uhlmann 2005")
         axes.set_xlabel("t [s]")
         axes.set_ylabel("streamwise velocity [cm/s]")
 
@@ -274,7 +253,7 @@ def all_checks():
         pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.01, False),
         pile_check("100 disks settle", "cases/benchmarks/sedimentation_100_disks/case.toml", 0.05, False),
     ]
-    if os.path.isdir(SHARED_UHLMANN):
+    if SHARED_UHLMANN is not None:
         checks.append(uhlmann_check("DKT at Re ≈ 450 vs Uhlmann (2005)"))
     return checks
 
@@ -293,10 +272,9 @@ def main():
         print(f"validate: no fddem program at {options.fddem} (build it, or give --fddem)", file=sys.stderr)
         return 2
 
-    import matplotlib
+    from fddem.figures import pyplot
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()  # Agg, and the style of fddem plot
 
     os.makedirs(options.output, exist_ok=True)
     checks = [c for c in all_checks() if c.quick or not options.quick]

@@ -52,7 +52,7 @@ TEST_F(Cli, SmallRunWritesEveryDocumentedOutput)
     ASSERT_EQ(r.status, 0) << r.output;
     for (const char* file :
          {"case.toml", "solver.csv", "summary.json", "fields.pvd", "fields/fields_000000.vtr",
-          "fields/fields_000002.vtr", "samples/vertical_centerline.csv"}) {
+          "open_in_paraview.py", "fields/fields_000002.vtr", "samples/vertical_centerline.csv"}) {
         EXPECT_TRUE(fs::exists(out / file)) << file;
     }
     std::ifstream solver(out / "solver.csv");

@@ -3,7 +3,8 @@
 // What the fixed-cylinder cases measure (cases/verification/cylinder_re20, cylinder_re40), from a
 // finished 2D Simulation: the drag and lift coefficients, the length of the recirculation behind
 // the cylinder on its axis and the pressure difference between its front and rear points. The
-// same definitions as tools/cylinder_wake.py, which reads them from a run directory.
+// same definitions as python/fddem/wake.py (tools/cylinder_wake.py), which reads them from a run
+// directory.
 
 #include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/grid/sampling.hpp"

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/run/run_outputs.hpp"
 
+#include "fddem/io/atomic_file.hpp"
 #include "fddem/io/run_directory.hpp"
 #include "fddem/run/body_snapshot.hpp"
 #include "fddem/run/field_frames.hpp"
+#include "fddem/run/paraview_script.hpp"
 #include "fddem/run/particle_history.hpp"
 #include "fddem/run/solver_history.hpp"
 
@@ -37,6 +39,7 @@ RunOutputs<Dim>::RunOutputs(fs::path directory, bool has_bodies)
 template <int Dim>
 void RunOutputs<Dim>::create()
 {
+    write_file_atomically(directory_ / paraview_script_name, paraview_script);
     solver_ = std::make_unique<CsvHistory>(directory_ / "solver.csv", solver_columns());
     if (has_bodies_) {
         particles_ =

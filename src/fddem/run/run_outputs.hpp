@@ -20,7 +20,8 @@ class RunOutputs {
 public:
     RunOutputs(std::filesystem::path directory, bool has_bodies);
 
-    /// A new run: the histories with their header lines (replacing those of a forced rerun).
+    /// A new run: the histories with their header lines (replacing those of a forced rerun), and
+    /// the ParaView script open_in_paraview.py.
     void create();
     /// A restart, before anything is written: throws InputError (naming the file) unless each
     /// history starts with its header and can be cut back to the length `record` gives.

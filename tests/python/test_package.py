@@ -1,0 +1,271 @@
+"""The fddem Python package on synthetic run directories (tests/python/synthetic_run.py): the
+readers, the plane slices in 2D and 3D, the figures, `python3 -m fddem plot` and its errors, and
+the ParaView script against a stand-in for paraview.simple. Run by CTest (label unit):
+
+    PYTHONPATH=python /usr/bin/python3 -m unittest discover -s tests/python -p 'test_*.py'
+"""
+
+import contextlib
+import io as text_io
+import os
+import subprocess
+import sys
+import tempfile
+import types
+import unittest
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.join(ROOT, "python"))
+sys.path.insert(0, HERE)
+
+import fddem  # noqa: E402
+from fddem import io, slices  # noqa: E402
+from synthetic_run import make_run, velocity_field  # noqa: E402
+
+# A figure with a picture in it: pixel values vary. A blank (one-colour) PNG has variance 0;
+# an axes frame with labels only is far below this.
+MIN_PIXEL_VARIANCE = 1e-3
+
+
+def pixel_variance(path):
+    import matplotlib.image
+
+    image = matplotlib.image.imread(path)[..., :3]
+    return float(np.var(image))
+
+
+class Readers(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.run2 = make_run(os.path.join(cls.tmp.name, "two"), dimension=2)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_tables_are_numpy_arrays_by_column(self):
+        solver = io.read_solver(self.run2)
+        self.assertIsInstance(solver["time"], np.ndarray)
+        self.assertEqual(len(solver["step"]), 10)
+        self.assertEqual(solver["total_outer_iterations"][-1], 50)
+
+    def test_particles_are_split_by_body_in_time_order(self):
+        particles = io.read_particles(self.run2)
+        self.assertEqual(sorted(particles), [0, 1])
+        self.assertTrue(np.all(np.diff(particles[1]["time"]) > 0))
+        np.testing.assert_allclose(particles[0]["y"], 0.7 - particles[0]["time"])
+
+    @unittest.skipUnless(io.has_pandas(), "pandas not installed")
+    def test_data_frames_where_pandas_is_installed(self):
+        run = fddem.Run(self.run2)
+        rows = run.particles()
+        self.assertEqual(type(rows).__name__, "DataFrame")
+        self.assertEqual(len(rows), 6)
+        self.assertAlmostEqual(rows.groupby("id")["y"].min().max(), 0.5)
+        self.assertIsInstance(run.particles(as_frame=False), dict)
+
+    def test_as_frame_without_pandas_says_what_is_missing(self):
+        saved = io.pandas
+        io.pandas = None
+        try:
+            self.assertIsInstance(io.read_solver(self.run2, as_frame=None), dict)
+            with self.assertRaises(ImportError):
+                io.read_solver(self.run2, as_frame=True)
+        finally:
+            io.pandas = saved
+
+    def test_field_frames_read_back_exactly(self):
+        run = fddem.Run(self.run2)
+        np.testing.assert_allclose(run.frame_times, [0.0, 0.1, 0.2])
+        frame = run.field(-1)
+        self.assertEqual(frame["velocity"].shape, (1, 16, 16, 3))
+        np.testing.assert_allclose(frame["velocity"],
+                                   velocity_field(frame["x"], frame["y"], frame["z"], 0.2))
+        bodies = run.bodies_at_frame(-1)
+        np.testing.assert_allclose(bodies["radius"], [0.1, 0.1])
+        np.testing.assert_allclose(bodies["centre"][:, 1], [0.5, 0.5])
+
+    def test_case_title_source_and_units(self):
+        run = fddem.Run(self.run2)
+        self.assertEqual(run.title, "synthetic run")
+        self.assertEqual(io.read_case_source(self.run2), "synthetic.toml")
+        self.assertEqual(run.units.label("u", "velocity"), "u [m/s]")
+        self.assertEqual(run.units.label("F", "force"), "F [N/m]")  # per unit depth in 2D
+
+    def test_a_directory_that_is_not_a_run_is_refused(self):
+        with self.assertRaises(fddem.NotARunError):
+            fddem.Run(self.tmp.name)
+        with self.assertRaises(fddem.NotARunError):
+            fddem.Run(os.path.join(self.tmp.name, "missing"))
+
+
+class Slices(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.run3 = make_run(os.path.join(cls.tmp.name, "three"), dimension=3, n_bodies=2)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_mid_planes_of_a_linear_field_are_exact(self):
+        frame = fddem.Run(self.run3).field(-1)  # u = 0.2 (y, −x + 2z, x)
+        for normal in range(3):
+            plane = slices.plane_slice(frame, normal, 0.5)
+            a, b = plane["axes"]
+            A, B = np.meshgrid(plane["a"], plane["b"])  # rows b, columns a
+            point = {normal: np.full_like(A, 0.5), a: A, b: B}
+            expected = 0.2 * np.stack([point[1], -point[0] + 2 * point[2], point[0]], axis=-1)
+            np.testing.assert_allclose(plane["ua"], expected[..., a], atol=1e-12)
+            np.testing.assert_allclose(plane["ub"], expected[..., b], atol=1e-12)
+            np.testing.assert_allclose(plane["un"], expected[..., normal], atol=1e-12)
+
+    def test_a_plane_between_cell_layers_interpolates_linearly(self):
+        frame = fddem.Run(self.run3).field(-1)
+        plane = slices.plane_slice(frame, 2, 0.4)  # v = 0.2 (−x + 2 z): linear in z
+        np.testing.assert_allclose(plane["ub"][0, :], 0.2 * (-plane["a"] + 0.8), atol=1e-12)
+
+    def test_a_2d_frame_is_its_own_plane(self):
+        run2 = make_run(os.path.join(self.tmp.name, "two"), dimension=2)
+        plane = slices.plane_slice(fddem.Run(run2).field(-1))
+        self.assertEqual(plane["axes"], (0, 1))
+        self.assertEqual(plane["speed"].shape, (16, 16))
+
+    def test_spheres_cut_by_a_plane(self):
+        centres = [[0.5, 0.5, 0.5], [0.2, 0.3, 0.56], [0.8, 0.8, 0.9]]
+        cuts = slices.bodies_cut_by_plane(centres, [0.1, 0.1, 0.1], normal_axis=2, position=0.5)
+        self.assertEqual([c[0] for c in cuts], [0, 1])  # the third misses the plane
+        self.assertAlmostEqual(cuts[0][3], 0.1)
+        self.assertAlmostEqual(cuts[1][3], np.sqrt(0.1**2 - 0.06**2))
+        cuts = slices.bodies_cut_by_plane(centres, [0.1] * 3, normal_axis=0, position=0.25)
+        self.assertEqual([(c[0], c[1], c[2]) for c in cuts], [(1, 0.3, 0.56)])
+
+    def test_line_profile_through_the_middle(self):
+        frame = fddem.Run(self.run3).field(-1)
+        plane = slices.plane_slice(frame, 2, 0.5)
+        y, u, _ = slices.line_profile(plane, 1)  # along y at x = 0.5: u = 0.2 y
+        np.testing.assert_allclose(u, 0.2 * y, atol=1e-12)
+
+
+class Figures(unittest.TestCase):
+    """Every figure the package makes for a 2D and a 3D run with bodies and one without."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def plot(self, run_dir, *options):
+        out = os.path.join(run_dir, "plots")
+        result = subprocess.run([sys.executable, "-m", "fddem", "plot", run_dir, "-o", out,
+                                 *options], capture_output=True, text=True,
+                                env={**os.environ, "PYTHONPATH": os.path.join(ROOT, "python")})
+        self.assertEqual(result.returncode, 0, result.stderr)
+        return out, result
+
+    def assert_pictures(self, out, names):
+        for name in names:
+            path = os.path.join(out, name + ".png")
+            self.assertTrue(os.path.exists(path), path)
+            self.assertGreater(pixel_variance(path), MIN_PIXEL_VARIANCE, path)
+
+    def test_3d_run_with_spheres(self):
+        run = make_run(os.path.join(self.tmp.name, "three"), dimension=3, n_bodies=2)
+        out, _ = self.plot(run)
+        self.assert_pictures(out, ["overview", "slices", "snapshots", "solver", "positions",
+                                   "velocities", "energy", "trajectories", "contacts", "forces"])
+        self.assertTrue(os.path.exists(os.path.join(run, "open_in_paraview.py")))
+
+    def test_2d_run_without_bodies(self):
+        run = make_run(os.path.join(self.tmp.name, "fluid"), dimension=2, n_bodies=0)
+        out, result = self.plot(run, "--svg")
+        self.assert_pictures(out, ["overview", "solver", "snapshots"])
+        self.assertTrue(os.path.exists(os.path.join(out, "overview.svg")))
+        self.assertFalse(os.path.exists(os.path.join(out, "trajectories.png")))
+        self.assertIn(os.path.join(out, "overview.png"), result.stdout)
+
+    def test_movie(self):
+        run = make_run(os.path.join(self.tmp.name, "movie"), dimension=2, n_bodies=1,
+                       n_frames=4)
+        out, _ = self.plot(run, "--movie", "--only", "overview", "-q")
+        self.assertGreater(os.path.getsize(os.path.join(out, "movie.mp4")), 1000)
+
+    def test_not_a_run_directory_is_exit_2_and_one_line(self):
+        for path in (self.tmp.name, os.path.join(self.tmp.name, "nowhere")):
+            result = subprocess.run([sys.executable, "-m", "fddem", "plot", path],
+                                    capture_output=True, text=True,
+                                    env={**os.environ, "PYTHONPATH": os.path.join(ROOT, "python")})
+            self.assertEqual(result.returncode, 2)
+            self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
+            self.assertIn(path, result.stderr)
+
+
+class ParaViewScript(unittest.TestCase):
+    """The script runs against a recording stand-in for paraview.simple (ParaView itself is not
+    a dependency): it opens both collections and glyphs spheres of the bodies' radius."""
+
+    def test_opens_fields_and_bodies_with_spheres_of_the_radius(self):
+        calls = []
+
+        class Proxy(types.SimpleNamespace):
+            def __init__(self, name, **kwargs):
+                super().__init__(**kwargs)
+                self.name = name
+                self.GlyphType = types.SimpleNamespace()
+                self.SliceType = types.SimpleNamespace()
+                calls.append((name, kwargs, self))
+
+            def __getattr__(self, attribute):  # any method: record and return a proxy
+                if attribute.startswith("__"):
+                    raise AttributeError(attribute)
+                return lambda *a, **k: Proxy(attribute, args=a, **k)
+
+            def UpdatePipeline(self):
+                pass
+
+            def GetDataInformation(self):
+                return types.SimpleNamespace(GetBounds=lambda: (0, 1, 0, 2, 0, 0))
+
+        simple = types.ModuleType("paraview.simple")
+        for name in ("ColorBy", "GetActiveCamera", "GetActiveViewOrCreate", "GetAnimationScene",
+                     "GetColorTransferFunction", "Glyph", "PVDReader", "Render", "ResetCamera",
+                     "SaveScreenshot", "Show", "Slice"):
+            setattr(simple, name, (lambda n: lambda *a, **k: Proxy(n, args=a, **k))(name))
+        package = types.ModuleType("paraview")
+        package.simple = simple
+        with tempfile.TemporaryDirectory() as tmp:
+            run = make_run(os.path.join(tmp, "run"), dimension=2, n_bodies=1)
+            script = os.path.join(run, "open_in_paraview.py")
+            with open(os.path.join(ROOT, "python", "fddem", "paraview_state.py")) as f:
+                source = f.read()
+            with open(script, "w") as f:
+                f.write(source)
+            saved = {k: sys.modules.get(k) for k in ("paraview", "paraview.simple")}
+            sys.modules.update({"paraview": package, "paraview.simple": simple})
+            try:
+                with contextlib.redirect_stdout(text_io.StringIO()):
+                    exec(compile(source, script, "exec"), {"__file__": script, "__name__": "x"})
+            finally:
+                for k, v in saved.items():
+                    if v is None:
+                        sys.modules.pop(k, None)
+                    else:
+                        sys.modules[k] = v
+        readers = [kwargs["FileName"] for name, kwargs, _ in calls if name == "PVDReader"]
+        self.assertEqual([os.path.basename(r) for r in readers], ["fields.pvd", "particles.pvd"])
+        glyph = next(proxy for name, _, proxy in calls if name == "Glyph")
+        self.assertEqual(glyph.ScaleArray, ["POINTS", "radius"])
+        self.assertEqual(glyph.ScaleFactor, 2.0)  # unit sphere glyph: radius 0.5
+        self.assertEqual(glyph.GlyphMode, "All Points")
+
+
+if __name__ == "__main__":
+    unittest.main()
