@@ -238,7 +238,7 @@ TEST_F(Cli, BadCommandLinesNameTheirFault)
     // Issue 17: `fddem bogus` said only "A subcommand is required", and a directory given as
     // the case file read as an empty case ("missing required key 'domain.size'").
     const std::vector<std::pair<std::string, std::string>> bad{
-        {"bogus", "unknown subcommand 'bogus' (the subcommands are run, info, validate)"},
+        {"bogus", "unknown subcommand 'bogus' (the subcommands are run, info, validate, plot)"},
         {"run " + root_.string(), root_.string() + ": is a directory, not a case file"}};
     for (const auto& [arguments, message] : bad) {
         const Result r = run(arguments);
