@@ -37,7 +37,7 @@ LubricationResistance spheres(double gap, double radius, double other_radius, do
 LubricationResistance disks(double gap, double radius, double other_radius, double viscosity)
 {
     // Reynolds' lubrication equation for the gap h + x²/(2a*), per unit length
-    // (docs/method.md §5.6).
+    // (docs/method.md §5, Lubrication).
     const double reduced =
         std::isinf(other_radius) ? radius : radius * other_radius / (radius + other_radius);
     const double ratio = reduced / gap;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// Lubrication correction for two balls, or a ball and a plane wall, closer than the grid
-/// resolves (issue 16; docs/method.md §5.6). Pure functions of the gap; dem_step.cpp applies
-/// them implicitly inside the DEM sub-steps.
+/// resolves (issue 16; docs/method.md §5, Lubrication). Pure functions of the gap; dem_step.cpp
+/// applies them implicitly inside the DEM sub-steps.
 ///
 /// A lubrication force is a linear damper on the relative surface velocity, F = −c(h) v, with a
 /// resistance c that diverges as the gap h closes. The forms (leading terms of the asymptotic
@@ -19,9 +19,9 @@
 ///                  (Jeffrey & Onishi 1984, Y^A_11; 1/6 for equal spheres), wall g_t = 8/15
 ///                  (Goldman, Cox & Brenner 1967, a sphere translating along a wall).
 ///   2D normal      c_n = 3√2 π μ (a*/h)^(3/2) per unit length. Derived here from Reynolds'
-///                  lubrication equation for the gap h + x²/(2a*) (docs/method.md §5.6); it is
-///                  the leading term given for a cylinder near a wall by Jeffrey & Onishi (1981,
-///                  QJMAM 34) as recalled, not re-checked against the paper's text.
+///                  lubrication equation for the gap h + x²/(2a*) (docs/method.md §5, Lubrication);
+///                  it is the leading term given for a cylinder near a wall by Jeffrey & Onishi
+///                  (1981, QJMAM 34) as recalled, not re-checked against the paper's text.
 ///   2D tangential  c_t = 2√2 π μ (a*/h)^(1/2) per unit length. Derived the same way for a
 ///                  cylinder translating (not rotating) along a wall; for two cylinders the
 ///                  reduced radius is used, an approximation (the exact split with the radius
@@ -31,8 +31,8 @@
 /// activation distance h_Δ (`range`), so only the part it misses is added:
 ///   c_corr(h) = c(max(h, h_σ)) − c(h_Δ)  for h < h_Δ,   0 for h ≥ h_Δ,
 /// which vanishes continuously at h_Δ and is held at its value at the roughness length h_σ
-/// below it (also while the bodies overlap), where asperities touch (Kempe & Fröhlich 2012;
-/// Simeonov & Calantoni 2012 saturate in the same way).
+/// below it (also while the bodies overlap), where asperities touch (Breugem 2012 holds it at
+/// a roughness length in the same way).
 
 namespace fddem {
 

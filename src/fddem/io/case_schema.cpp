@@ -462,20 +462,20 @@ std::vector<KeySpec> case_schema()
                           "between close bodies and walls (Breugem 2012: the analytic resistance "
                           "at the gap minus that at lubrication.range; normal and tangential, "
                           "spheres and disks; applied implicitly in the DEM sub-steps; "
-                          "docs/method.md §5.6). false: none, as the paper."),
+                          "docs/method.md §5, Lubrication). false: none, as the paper."),
                       &CaseConfig::lubrication, &LubricationConfig::is_enabled));
     s.push_back(bound(positive(key("lubrication", "range", T::real, none, "2.0",
                                    "Activation gap h_Δ in grid spacings h (the largest): the "
                                    "correction acts below it and vanishes continuously at it. "
-                                   "About 2 h, where the grid stops resolving the film (Breugem "
-                                   "2012 used 1 h to 2 h depending on the resolution).")),
+                                   "About 2 h, where the grid stops resolving the film (to be "
+                                   "calibrated against the resolved force, as Breugem 2012 did).")),
                       &CaseConfig::lubrication, &LubricationConfig::range));
     s.push_back(
         bound(ranged(key("lubrication", "roughness", T::real, none, "0.001",
                          "Saturation gap h_σ as a fraction of the smaller radius: below it "
                          "(and while overlapping) the correction is held at its value at h_σ, "
-                         "where surface asperities touch (measured roughness of glass and "
-                         "steel spheres is 1e-4 to 1e-3 of the radius, Joseph et al. 2001)."),
+                         "where surface asperities touch (fddem's choice, of the order invoked "
+                         "for precision spheres; to be calibrated against restitution data)."),
                      0.0, 1.0, true, false),
               &CaseConfig::lubrication, &LubricationConfig::roughness));
 

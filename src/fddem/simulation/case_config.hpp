@@ -159,7 +159,7 @@ struct ContactConfig {
 };
 
 /// [lubrication]: the correction for the film between close bodies that the grid does not
-/// resolve (contact/lubrication.hpp, docs/method.md §5.6). Off by default.
+/// resolve (contact/lubrication.hpp, docs/method.md §5, Lubrication). Off by default.
 struct LubricationConfig {
     bool is_enabled = false;
     double range = 2.0;      ///< activation gap h_Δ in grid spacings h (the largest spacing)
