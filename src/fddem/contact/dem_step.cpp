@@ -34,7 +34,9 @@ public:
                   const Model& model, ContactHistory<Dim>& history, double margin,
                   const LubricationSettings& lubrication, const CellList<Dim>& cells)
         : force(bodies.size()), torque(bodies.size()), has_contact(bodies.size()), walls_(walls),
-          model_(model), history_(history), margin_(margin), domain_(cells.domain()),
+          model_(model), history_(history),
+          margin_(lubrication.is_enabled ? std::max(margin, lubrication.range) : margin),
+          domain_(cells.domain()),
           neighbours_(std::max(margin, lubrication.is_enabled ? lubrication.range : 0.0),
                       largest_radius(bodies), cells),
           lubrication_(lubrication)

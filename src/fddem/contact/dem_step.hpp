@@ -56,8 +56,10 @@ struct DemSettings {
     double margin = 0.0;
     /// Lubrication correction (contact/lubrication.hpp), off by default. When on, pairs and
     /// walls closer than its range get, after each sub-step's second half-kick, a backward-Euler
-    /// damping impulse of their relative normal and tangential surface velocities; the cell list
-    /// must then reach 2 r_max + max(margin, range).
+    /// damping impulse of their relative normal and tangential surface velocities, and count as
+    /// in contact (as within the margin: with the paper's coupling the DEM moves them, so the
+    /// damping acts on the velocity the body keeps); the cell list must then reach
+    /// 2 r_max + max(margin, range).
     LubricationSettings lubrication{};
 };
 

@@ -227,6 +227,25 @@ void check_stiff_approach()
     EXPECT_LT(speed, 1e-6);
 }
 
+TEST(Lubrication, BodiesWithinRangeCountAsInContact)
+{
+    // A sphere 1 mm above the floor, range 2 mm: moved by the DEM for the step (paper coupling)
+    // with lubrication on; untouched, as before, with it off.
+    const double a = 0.01;
+    for (const bool is_on : {true, false}) {
+        std::vector<Particle<3>> bodies{
+            test::ball<3>(Vec<3>(0.05, 0.05, a + 1e-3), Vec<3>(0.0, 0.0, -0.001), a, 2000.0)};
+        const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
+        DemSettings settings = lubricated(1.0, 0.002, 10);
+        settings.lubrication.is_enabled = is_on;
+        CellList<3> cells(floor.origin, floor.length, 0.03);
+        ContactHistory<3> history;
+        test::step_dem<3>(bodies, floor, settings, 1e-3, cells, history);
+        EXPECT_EQ(bodies[0].contact.is_in_contact, is_on);
+        EXPECT_EQ(bodies[0].contact.mean_force.z() > 0.0, is_on);
+    }
+}
+
 TEST(Lubrication, ImplicitDampingIsStableWhenStiff)
 {
     check_stiff_approach<2>();
