@@ -7,6 +7,7 @@
 #include "fddem/contact/tangential_contact.hpp"
 
 #include <algorithm>
+#include <limits>
 
 namespace fddem {
 namespace {
@@ -31,10 +32,14 @@ class ContactForces {
 public:
     ContactForces(std::span<const Particle<Dim>> bodies, const DemWalls<Dim>& walls,
                   const Model& model, ContactHistory<Dim>& history, double margin,
-                  const CellList<Dim>& cells)
+                  const LubricationSettings& lubrication, const CellList<Dim>& cells)
         : force(bodies.size()), torque(bodies.size()), has_contact(bodies.size()), walls_(walls),
-          model_(model), history_(history), margin_(margin), domain_(cells.domain()),
-          neighbours_(margin, largest_radius(bodies), cells)
+          model_(model), history_(history),
+          margin_(lubrication.is_enabled ? std::max(margin, lubrication.range) : margin),
+          domain_(cells.domain()),
+          neighbours_(std::max(margin, lubrication.is_enabled ? lubrication.range : 0.0),
+                      largest_radius(bodies), cells),
+          lubrication_(lubrication)
     {
         neighbours_.set_walls(walls.origin, walls.length, walls.has_walls);
         radii_.reserve(bodies.size());
@@ -97,6 +102,35 @@ public:
                   [](const auto& x, const auto& y) { return x.key < y.key; });
     }
 
+    /// The lubrication impulses over one sub-step `step` at the bodies' current state, applied
+    /// pair by pair (in the neighbour list's order) to contact.velocity and contact.omega by a
+    /// backward-Euler damper, and added to the mean force and torque as impulse / `dt`.
+    void lubricate(std::span<Particle<Dim>> bodies, double step, double dt)
+    {
+        for (const auto& [i, j] : neighbours_.pairs()) {
+            const auto a = static_cast<std::size_t>(i);
+            const auto b = static_cast<std::size_t>(j);
+            if (!bodies[a].is_free() && !bodies[b].is_free()) {
+                continue;
+            }
+            const ContactGeometry<Dim> g =
+                ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]), domain_);
+            damp(g, bodies[a], &bodies[b], bodies[b].radius(), step, dt);
+        }
+        for (const auto& [body, d, side] : neighbours_.walls()) {
+            const auto a = static_cast<std::size_t>(body);
+            if (!bodies[a].is_free()) {
+                continue;
+            }
+            const auto axis = static_cast<std::size_t>(d);
+            const double at = walls_.origin[d] + side * walls_.length[d];
+            const ContactGeometry<Dim> g =
+                ball_wall_contact(ball_of(bodies[a]), d, side, at,
+                                  walls_.velocity[axis][static_cast<std::size_t>(side)]);
+            damp(g, bodies[a], nullptr, std::numeric_limits<double>::infinity(), step, dt);
+        }
+    }
+
     std::vector<Vec<Dim>> force;
     std::vector<AngularVec<Dim>> torque;
     std::vector<char> has_contact; ///< touched (or came within the margin) during the step
@@ -152,6 +186,53 @@ private:
         ++in_contact;
     }
 
+    /// One pair's (`second` null: a wall's) lubrication impulse. The relative surface velocity
+    /// w at the contact point is damped by backward Euler, w ← w/(1 + c Δt_i K), K the pair's
+    /// inverse effective mass along the normal (1/m1 + 1/m2) or across it (plus a²/J of each):
+    /// exact for the linear damper the lubrication force is, whatever c Δt_i.
+    void damp(const ContactGeometry<Dim>& g, Particle<Dim>& first, Particle<Dim>* second,
+              double second_radius, double step, double dt)
+    {
+        const LubricationResistance c =
+            lubrication_correction<Dim>(-g.overlap, first.radius(), second_radius, lubrication_);
+        if (c.normal == 0.0 && c.tangential == 0.0) {
+            return;
+        }
+        const auto inverse = [](const Particle<Dim>* p, double value) {
+            return p != nullptr && p->is_free() ? 1.0 / value : 0.0;
+        };
+        const double mass_sum =
+            inverse(&first, first.mass()) + inverse(second, second ? second->mass() : 1.0);
+        const double turn_sum =
+            g.lever_first.squaredNorm() * inverse(&first, first.inertia()) +
+            g.lever_second.squaredNorm() * inverse(second, second ? second->inertia() : 1.0);
+        // w = v·n (< 0 approaching) and the slip; the impulses on the second body.
+        const double normal_velocity = -g.overlap_rate;
+        const Vec<Dim> normal_impulse =
+            (damped_relative_velocity(normal_velocity, c.normal, mass_sum, step) -
+             normal_velocity) /
+            mass_sum * g.normal;
+        const Vec<Dim> slip_impulse =
+            (damped_relative_velocity(1.0, c.tangential, mass_sum + turn_sum, step) - 1.0) /
+            (mass_sum + turn_sum) * g.slip_velocity;
+        const Vec<Dim> on_second = normal_impulse + slip_impulse;
+        const auto push = [&](Particle<Dim>& p, const Vec<Dim>& impulse, const Vec<Dim>& lever) {
+            if (!p.is_free()) {
+                return;
+            }
+            ContactState<Dim>& s = p.contact;
+            const AngularVec<Dim> moment = cross(lever, impulse);
+            s.velocity += impulse / p.mass();
+            s.omega += moment / p.inertia();
+            s.mean_force += impulse / dt;
+            s.mean_torque += moment / dt;
+        };
+        push(first, Vec<Dim>(-on_second), g.lever_first);
+        if (second != nullptr) {
+            push(*second, on_second, g.lever_second);
+        }
+    }
+
     const DemWalls<Dim>& walls_;
     const Model& model_;
     ContactHistory<Dim>& history_;
@@ -163,6 +244,7 @@ private:
     std::vector<Vec<Dim>> centres_;
     std::vector<double> radii_;
     NeighbourList<Dim> neighbours_; ///< candidates for this step's sub-steps
+    const LubricationSettings& lubrication_;
 
     static double largest_radius(std::span<const Particle<Dim>> bodies)
     {
@@ -192,7 +274,8 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
     const double step = dt / settings.substeps;
     const double half = 0.5 * step;
     const double weight = 1.0 / settings.substeps; // each sub-step's share of the mean
-    ContactForces<Dim, Model> contacts(bodies, walls, model, history, settings.margin, cells);
+    ContactForces<Dim, Model> contacts(bodies, walls, model, history, settings.margin,
+                                       settings.lubrication, cells);
     contacts.evaluate(bodies, cells, step, false, outcome);
     const auto kick = [&](std::size_t b) {
         const Particle<Dim>& body = bodies[b];
@@ -217,6 +300,9 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
             if (bodies[b].is_free()) {
                 kick(b);
             }
+        }
+        if (settings.lubrication.is_enabled) {
+            contacts.lubricate(bodies, step, dt);
         }
     }
     for (std::size_t b = 0; b < n; ++b) {

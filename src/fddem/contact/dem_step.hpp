@@ -16,6 +16,7 @@
 #include "fddem/contact/cell_list.hpp"
 #include "fddem/contact/contact_history.hpp"
 #include "fddem/contact/contact_models.hpp"
+#include "fddem/contact/lubrication.hpp"
 #include "fddem/contact/material.hpp"
 #include "fddem/core/vec.hpp"
 
@@ -53,6 +54,13 @@ struct DemSettings {
     /// for the step (has_contact) without a force: with the paper's coupling DEM then moves
     /// them, instead of the fluid update, which cannot see them close in [m]. 0: touching only.
     double margin = 0.0;
+    /// Lubrication correction (contact/lubrication.hpp), off by default. When on, pairs and
+    /// walls closer than its range get, after each sub-step's second half-kick, a backward-Euler
+    /// damping impulse of their relative normal and tangential surface velocities, and count as
+    /// in contact (as within the margin: with the paper's coupling the DEM moves them, so the
+    /// damping acts on the velocity the body keeps); the cell list must then reach
+    /// 2 r_max + max(margin, range).
+    LubricationSettings lubrication{};
 };
 
 /// What the contacts did over the step, beyond what each body's record holds.

@@ -457,6 +457,28 @@ std::vector<KeySpec> case_schema()
                      0, max_dem_substeps, false, false),
               &CaseConfig::contact, &ContactConfig::substeps));
 
+    s.push_back(bound(key("lubrication", "enabled", T::boolean, none, "false",
+                          "Add the lubrication correction of the film the grid does not resolve "
+                          "between close bodies and walls (Breugem 2012: the analytic resistance "
+                          "at the gap minus that at lubrication.range; normal and tangential, "
+                          "spheres and disks; applied implicitly in the DEM sub-steps; "
+                          "docs/method.md §5, Lubrication). false: none, as the paper."),
+                      &CaseConfig::lubrication, &LubricationConfig::is_enabled));
+    s.push_back(bound(positive(key("lubrication", "range", T::real, none, "2.0",
+                                   "Activation gap h_Δ in grid spacings h (the largest): the "
+                                   "correction acts below it and vanishes continuously at it. "
+                                   "About 2 h, where the grid stops resolving the film (to be "
+                                   "calibrated against the resolved force, as Breugem 2012 did).")),
+                      &CaseConfig::lubrication, &LubricationConfig::range));
+    s.push_back(
+        bound(ranged(key("lubrication", "roughness", T::real, none, "0.001",
+                         "Saturation gap h_σ as a fraction of the smaller radius: below it "
+                         "(and while overlapping) the correction is held at its value at h_σ, "
+                         "where surface asperities touch (fddem's choice, of the order invoked "
+                         "for precision spheres; to be calibrated against restitution data)."),
+                     0.0, 1.0, true, false),
+              &CaseConfig::lubrication, &LubricationConfig::roughness));
+
     s.push_back(
         bound(positive(key("nondimensional", "reynolds", T::real, none, "none",
                            "Re = ρf U_c D / μ (D: the first body's diameter); fddem derives "

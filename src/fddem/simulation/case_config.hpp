@@ -158,6 +158,14 @@ struct ContactConfig {
     ContactDerived derived;
 };
 
+/// [lubrication]: the correction for the film between close bodies that the grid does not
+/// resolve (contact/lubrication.hpp, docs/method.md §5, Lubrication). Off by default.
+struct LubricationConfig {
+    bool is_enabled = false;
+    double range = 2.0;      ///< activation gap h_Δ in grid spacings h (the largest spacing)
+    double roughness = 1e-3; ///< saturation gap h_σ as a fraction of the smaller radius
+};
+
 /// [nondimensional]: given, fddem derives viscosity, gravity and body densities.
 struct NondimensionalConfig {
     std::optional<double> reynolds;      ///< Re = ρf U_c D / μ
@@ -212,6 +220,7 @@ struct CaseConfig {
     std::vector<BodyConfig> bodies;
     CouplingConfig coupling;
     ContactConfig contact;
+    LubricationConfig lubrication;
     NondimensionalConfig nondimensional;
     OutputConfig output;
     CheckpointConfig checkpoint;

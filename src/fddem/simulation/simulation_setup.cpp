@@ -151,11 +151,17 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
             walls.velocity[axis][static_cast<std::size_t>(side)] = bc.wall(d, side);
         }
     }
-    return ContactSetup<Dim>{
-        DemSettings{std::move(*model), contact.velocity_damping,
-                    std::max(1, contact.derived.substeps), contact.margin},
-        contact.coupling == ContactCoupling::paper,
-        CellList<Dim>(grid.domain(), largest + contact.margin + 0.5 * smallest), walls};
+    // Lubrication acts up to its range h_Δ (in the largest grid spacing): the DEM's neighbour
+    // list must reach that far when it is on.
+    const LubricationConfig& lub = config.lubrication;
+    const LubricationSettings lubrication{lub.is_enabled, config.fluid.viscosity,
+                                          lub.range * grid.spacing().maxCoeff(), lub.roughness};
+    const double reach = std::max(contact.margin, lubrication.is_enabled ? lubrication.range : 0.0);
+    return ContactSetup<Dim>{DemSettings{std::move(*model), contact.velocity_damping,
+                                         std::max(1, contact.derived.substeps), contact.margin,
+                                         lubrication},
+                             contact.coupling == ContactCoupling::paper,
+                             CellList<Dim>(grid.domain(), largest + reach + 0.5 * smallest), walls};
 }
 
 #define FDDEM_INSTANTIATE_SETUP(DIM)                                                               \

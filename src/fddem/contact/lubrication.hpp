@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// Lubrication correction for two balls, or a ball and a plane wall, closer than the grid
+/// resolves (issue 16; docs/method.md §5, Lubrication). Pure functions of the gap; dem_step.cpp
+/// applies them implicitly inside the DEM sub-steps.
+///
+/// A lubrication force is a linear damper on the relative surface velocity, F = −c(h) v, with a
+/// resistance c that diverges as the gap h closes. The forms (leading terms of the asymptotic
+/// expansions for h ≪ a; a1, a2 the radii, a* = a1 a2/(a1 + a2) the reduced radius, a* = a1
+/// for a wall):
+///
+///   3D normal      c_n = 6πμ a1 [g1/ξ + g2 ln(1/ξ)],   ξ = h/ā,  ā = (a1 + a2)/2
+///                  two spheres, β = a2/a1: g1 = 2β²/(1+β)³, g2 = β(1+7β+β²)/(5(1+β)³)
+///                  (Jeffrey 1982; Jeffrey & Onishi 1984, X^A_11). g1/ξ = a*²/(a1 h): the
+///                  leading term is 6πμ a*²/h (Cox & Brenner 1967 for two spheres).
+///                  wall: ξ = h/a1, g1 = 1, g2 = 1/5 (Cox & Brenner 1967, the limit of Brenner
+///                  1961; Cooley & O'Neill 1969 add the constant 0.971 that is left out here).
+///   3D tangential  c_t = 6πμ a1 g_t ln(1/ξ), two spheres g_t = 4β(2+β+2β²)/(15(1+β)³)
+///                  (Jeffrey & Onishi 1984, Y^A_11; 1/6 for equal spheres), wall g_t = 8/15
+///                  (Goldman, Cox & Brenner 1967, a sphere translating along a wall).
+///   2D normal      c_n = 3√2 π μ (a*/h)^(3/2) per unit length. Derived here from Reynolds'
+///                  lubrication equation for the gap h + x²/(2a*) (docs/method.md §5, Lubrication);
+///                  it is the leading term given for a cylinder near a wall by Jeffrey & Onishi
+///                  (1981, QJMAM 34) as recalled, not re-checked against the paper's text.
+///   2D tangential  c_t = 2√2 π μ (a*/h)^(1/2) per unit length. Derived the same way for a
+///                  cylinder translating (not rotating) along a wall; for two cylinders the
+///                  reduced radius is used, an approximation (the exact split with the radius
+///                  ratio, as the sphere's g_t has, is not derived).
+///
+/// Breugem (2010, 2012) correction: the grid resolves the film down to a gap of about the
+/// activation distance h_Δ (`range`), so only the part it misses is added:
+///   c_corr(h) = c(max(h, h_σ)) − c(h_Δ)  for h < h_Δ,   0 for h ≥ h_Δ,
+/// which vanishes continuously at h_Δ and is held at its value at the roughness length h_σ
+/// below it (also while the bodies overlap), where asperities touch (Breugem 2012 holds it at
+/// a roughness length in the same way).
+
+namespace fddem {
+
+/// [lubrication] of a case, in SI units as the DEM uses it.
+struct LubricationSettings {
+    bool is_enabled = false; ///< off: the sub-steps are the dry DEM's, bit for bit
+    double viscosity = 0.0;  ///< μ [Pa·s]
+    double range = 0.0;      ///< activation gap h_Δ [m] (the case gives it in grid spacings)
+    double roughness = 1e-3; ///< h_σ as a fraction of the smaller radius
+};
+
+/// Resistance coefficients of one gap [N·s/m] (2D: per unit length).
+struct LubricationResistance {
+    double normal = 0.0;     ///< c_n: F_n = −c_n × approach speed
+    double tangential = 0.0; ///< c_t: F_t = −c_t × slip velocity
+};
+
+/// The full analytic resistance at gap `gap` > 0 between balls of radii `radius` and
+/// `other_radius` (+∞: a plane wall) in a fluid of viscosity `viscosity`. Dim 2: disks
+/// (cylinders, per unit length); Dim 3: spheres. Log terms are clamped at 0 for gaps beyond ā.
+template <int Dim>
+[[nodiscard]] LubricationResistance lubrication_resistance(double gap, double radius,
+                                                           double other_radius, double viscosity);
+
+/// The Breugem correction c(max(h, h_σ)) − c(h_Δ) for h < h_Δ, else 0 (h ≤ 0: overlapping,
+/// held at h_σ). h_σ = settings.roughness × the smaller radius.
+template <int Dim>
+[[nodiscard]] LubricationResistance lubrication_correction(double gap, double radius,
+                                                           double other_radius,
+                                                           const LubricationSettings& settings);
+
+/// Backward-Euler update of a relative velocity w under a linear damper c over Δt_i, with
+/// `inverse_mass` the sum of the bodies' inverse (effective) masses: w / (1 + c Δt_i/m*).
+/// Unconditionally stable: it shrinks |w| and never reverses it, for any c Δt_i.
+[[nodiscard]] inline double damped_relative_velocity(double velocity, double resistance,
+                                                     double inverse_mass, double step)
+{
+    return velocity / (1.0 + resistance * step * inverse_mass);
+}
+
+} // namespace fddem

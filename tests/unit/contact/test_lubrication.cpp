@@ -1,0 +1,256 @@
+// SPDX-License-Identifier: MIT
+// Lubrication correction (contact/lubrication.hpp): the sphere–wall normal resistance against
+// Brenner's (1961) exact series at small gaps, the two-sphere coefficients of Jeffrey & Onishi
+// (1984) for equal spheres, the disks' power laws, the Breugem correction (zero at and beyond
+// the range, held below the roughness), equal and opposite pair impulses in the sub-steps, and
+// the implicit damping's stability with c Δt_i / m far above 1.
+
+#include "fddem/contact/dem_step.hpp"
+#include "fddem/contact/lubrication.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "support/dem_bodies.hpp"
+
+namespace fddem {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+constexpr double wall = std::numeric_limits<double>::infinity();
+
+/// κ = F / (6πμaU) of the model for a sphere approaching a wall at gap δ = ratio × a.
+double kappa(double ratio)
+{
+    return lubrication_resistance<3>(ratio, 1.0, wall, 1.0).normal / (6.0 * pi);
+}
+
+TEST(Lubrication, SphereWallNormalFollowsBrennerAtSmallGaps)
+{
+    // κ of Brenner's exact series, computed (shared/reference/sphere_wall_brenner.csv; agrees
+    // with the 400-term table of Basilisk's sphere-towards-wall test to all printed digits).
+    // The model keeps a/δ + (1/5) ln(a/δ) (Cox & Brenner 1967) and leaves out the constant
+    // 0.97128 of Cooley & O'Neill (1969): the remainder must be that constant, to 2e-2 (the
+    // next terms are O((δ/a) ln(δ/a)): 0.0154 off at δ/a = 0.05, less below).
+    const std::array<std::array<double, 2>, 3> brenner{
+        {{0.05, 21.585820}, {0.025, 41.717597}, {0.01, 101.896172}}};
+    for (const auto& [ratio, exact] : brenner) {
+        EXPECT_NEAR(exact - kappa(ratio), 0.97128, 2e-2) << "δ/a = " << ratio;
+    }
+    // So the ratio to the exact force tends to 1: within 1 % at δ/a = 0.01.
+    EXPECT_NEAR(kappa(0.01) / 101.896172, 1.0, 0.01);
+    // The leading term alone: κ δ/a → 1.
+    EXPECT_NEAR(kappa(1e-6) * 1e-6, 1.0, 2e-5);
+}
+
+TEST(Lubrication, EqualSpheresHaveJeffreyOnishiCoefficients)
+{
+    // X^A_11 = (1/4) ξ⁻¹ + (9/40) ln ξ⁻¹, Y^A_11 = (1/6) ln ξ⁻¹ in units of 6πμa, ξ = h/a.
+    const double a = 0.5;
+    const double mu = 2.0;
+    const double gap = 1e-3 * a;
+    const LubricationResistance c = lubrication_resistance<3>(gap, a, a, mu);
+    const double log_term = std::log(a / gap);
+    EXPECT_NEAR(c.normal / (6.0 * pi * mu * a), 0.25 * a / gap + 9.0 / 40.0 * log_term, 1e-9);
+    EXPECT_NEAR(c.tangential / (6.0 * pi * mu * a), log_term / 6.0, 1e-12);
+    // The leading term is 6πμ a*²/h with a* = a/2.
+    const double tiny = 1e-9 * a;
+    EXPECT_NEAR(lubrication_resistance<3>(tiny, a, a, mu).normal * tiny /
+                    (6.0 * pi * mu * 0.25 * a * a),
+                1.0, 1e-6);
+    // The wall's coefficients are the limit of a large second sphere (tangential 8/15 of
+    // Goldman et al., normal log 1/5 of Cox & Brenner): the slopes against ln(1/h) agree, the
+    // logs' arguments differ (ξ = 2h/(a1 + a2) against h/a1), which is O(1), as is what both
+    // leave out.
+    const auto slope = [&](double other) {
+        const LubricationResistance c1 = lubrication_resistance<3>(gap, a, other, mu);
+        const LubricationResistance c2 = lubrication_resistance<3>(2.0 * gap, a, other, mu);
+        return std::array<double, 2>{(c1.normal - c2.normal - 6.0 * pi * mu * a * a / (2.0 * gap)) /
+                                         std::log(2.0),
+                                     (c1.tangential - c2.tangential) / std::log(2.0)};
+    };
+    const std::array<double, 2> big = slope(1e8 * a);
+    const std::array<double, 2> flat = slope(wall);
+    EXPECT_NEAR(big[0] / flat[0], 1.0, 1e-3); // a* of the big sphere is a(1 − 1e-8)
+    EXPECT_NEAR(big[1] / flat[1], 1.0, 1e-6);
+    EXPECT_NEAR(flat[0], 6.0 * pi * mu * a / 5.0, 1e-9);
+    EXPECT_NEAR(flat[1], 6.0 * pi * mu * a * 8.0 / 15.0, 1e-9);
+    // Symmetric in the radii.
+    const LubricationResistance ab = lubrication_resistance<3>(gap, a, 3.0 * a, mu);
+    const LubricationResistance ba = lubrication_resistance<3>(gap, 3.0 * a, a, mu);
+    EXPECT_NEAR(ab.normal / ba.normal, 1.0, 1e-12);
+    EXPECT_NEAR(ab.tangential / ba.tangential, 1.0, 1e-12);
+}
+
+TEST(Lubrication, DisksFollowReynoldsPowerLaws)
+{
+    // Per unit length: c_n = 3√2 π μ (a*/h)^(3/2), c_t = 2√2 π μ (a*/h)^(1/2).
+    const double a = 0.25;
+    const double mu = 0.1;
+    for (double gap : {1e-4, 1e-3, 1e-2}) {
+        const LubricationResistance flat = lubrication_resistance<2>(gap, a, wall, mu);
+        EXPECT_NEAR(flat.normal / std::pow(a / gap, 1.5), 3.0 * std::sqrt(2.0) * pi * mu, 1e-9);
+        EXPECT_NEAR(flat.tangential / std::sqrt(a / gap), 2.0 * std::sqrt(2.0) * pi * mu, 1e-12);
+        const LubricationResistance pair = lubrication_resistance<2>(gap, a, a, mu);
+        EXPECT_NEAR(pair.normal / std::pow(0.5 * a / gap, 1.5), 3.0 * std::sqrt(2.0) * pi * mu,
+                    1e-9);
+    }
+}
+
+template <int Dim>
+void check_correction()
+{
+    const double a = 0.1;
+    const LubricationSettings s{true, 1e-3, 0.02, 1e-3}; // range 0.2 a, roughness 1e-4 m
+    const auto normal = [&](double gap) {
+        return lubrication_correction<Dim>(gap, a, a, s).normal;
+    };
+    EXPECT_EQ(normal(0.02), 0.0);
+    EXPECT_EQ(normal(0.05), 0.0);
+    EXPECT_LT(normal(0.02 * (1.0 - 1e-9)), 1e-6 * normal(0.001)); // continuous at the range
+    // Below the roughness (and overlapping) it is held at its value there.
+    EXPECT_EQ(normal(0.5e-4), normal(1e-4));
+    EXPECT_EQ(normal(-1e-3), normal(1e-4));
+    EXPECT_GT(normal(1e-4), normal(1e-3));
+    // It is the full force minus the part the grid resolves.
+    const double full = lubrication_resistance<Dim>(1e-3, a, a, 1e-3).normal;
+    const double resolved = lubrication_resistance<Dim>(0.02, a, a, 1e-3).normal;
+    EXPECT_NEAR(normal(1e-3), full - resolved, 1e-12 * full);
+    // Off: nothing.
+    LubricationSettings off = s;
+    off.is_enabled = false;
+    EXPECT_EQ(lubrication_correction<Dim>(1e-3, a, a, off).normal, 0.0);
+    EXPECT_EQ(lubrication_correction<Dim>(1e-3, a, a, off).tangential, 0.0);
+}
+
+TEST(Lubrication, CorrectionVanishesAtRangeAndSaturatesAtRoughness)
+{
+    check_correction<2>();
+    check_correction<3>();
+}
+
+TEST(Lubrication, DefaultIsOff)
+{
+    const DemSettings settings{HertzMindlin{}, 0.0, 1};
+    EXPECT_FALSE(settings.lubrication.is_enabled);
+    EXPECT_FALSE(LubricationSettings{}.is_enabled);
+}
+
+/// DEM settings with a contact model that never acts here (the bodies stay apart) and
+/// lubrication on.
+DemSettings lubricated(double viscosity, double range, int substeps)
+{
+    DemSettings settings{LinearSpringDashpot({1e3, 0.0}, 1.0), 0.0, substeps};
+    settings.lubrication = {true, viscosity, range, 1e-3};
+    return settings;
+}
+
+TEST(Lubrication, PairImpulsesAreEqualAndOpposite)
+{
+    // Two spheres closing obliquely inside the range: linear and angular momentum kept to
+    // round-off, and both the approach and the slip slowed.
+    const double a = 0.01;
+    std::vector<Particle<3>> bodies{
+        test::ball<3>(Vec<3>(0.05, 0.05, 0.05), Vec<3>(0.01, 0.003, 0.0), a, 2000.0),
+        test::ball<3>(Vec<3>(0.0705, 0.05, 0.05), Vec<3>(-0.02, -0.001, 0.002), a, 1000.0)};
+    const DemWalls<3> open{Vec<3>::Zero(), Vec<3>(0.1, 0.1, 0.1), {false, false, false}};
+    const DemSettings settings = lubricated(1.0, 0.002, 10);
+    CellList<3> cells(open.origin, open.length, 0.03);
+    ContactHistory<3> history;
+    const auto momentum = [&] {
+        return Vec<3>(bodies[0].mass() * bodies[0].velocity +
+                      bodies[1].mass() * bodies[1].velocity);
+    };
+    const auto angular = [&] {
+        Vec<3> total = Vec<3>::Zero();
+        for (const Particle<3>& b : bodies) {
+            total += b.mass() * b.centre.cross(b.velocity) + b.inertia() * b.omega;
+        }
+        return total;
+    };
+    const Vec<3> p0 = momentum();
+    const Vec<3> l0 = angular();
+    const double approach0 = (bodies[0].velocity - bodies[1].velocity).x();
+    test::step_dem<3>(bodies, open, settings, 1e-3, cells, history);
+    EXPECT_LT((momentum() - p0).norm(), 1e-14 * p0.norm() + 1e-18);
+    EXPECT_LT((angular() - l0).norm(), 1e-12 * l0.norm() + 1e-18);
+    EXPECT_LT((bodies[0].velocity - bodies[1].velocity).x(), approach0);
+    EXPECT_GT((bodies[0].velocity - bodies[1].velocity).x(), 0.0);
+    EXPECT_NE(bodies[0].omega.norm(), 0.0); // the slip damping turned them
+    // The mean forces are opposite.
+    EXPECT_LT((bodies[0].contact.mean_force + bodies[1].contact.mean_force).norm(),
+              1e-12 * bodies[0].contact.mean_force.norm());
+}
+
+template <int Dim>
+void check_stiff_approach()
+{
+    // A ball a = 1 cm (ρ = 2000) moving at 1 cm/s toward the floor from 2 roughness lengths
+    // (20 µm) in a fluid of 10 Pa·s, range 2 mm, with Δt_i = 0.5 ms: c Δt_i / m ≫ 1, where an
+    // explicit update of the damping would reverse and grow the velocity at every sub-step.
+    const double a = 0.01;
+    const double roughness = 1e-3 * a;
+    const double mu = 10.0;
+    const double range = 0.002;
+    Vec<Dim> centre = Vec<Dim>::Constant(0.05);
+    centre[Dim - 1] = a + 2.0 * roughness;
+    Vec<Dim> velocity = Vec<Dim>::Zero();
+    velocity[Dim - 1] = -0.01;
+    std::vector<Particle<Dim>> bodies{test::ball<Dim>(centre, velocity, a, 2000.0)};
+    std::array<bool, Dim> walled{};
+    walled[Dim - 1] = true;
+    const DemWalls<Dim> floor = test::box<Dim>(Vec<Dim>::Constant(0.1), walled);
+    const double step = 5e-4;
+    const DemSettings settings = lubricated(mu, range, 1);
+    const double stiffness =
+        lubrication_correction<Dim>(2.0 * roughness, a, wall, settings.lubrication).normal * step /
+        bodies[0].mass();
+    EXPECT_GT(stiffness, 10.0);
+    CellList<Dim> cells(floor.origin, floor.length, 2.0 * a + range + 0.5 * a);
+    ContactHistory<Dim> history;
+    double speed = 0.01;
+    double gap = 2.0 * roughness;
+    for (int s = 0; s < 200; ++s) {
+        test::step_dem<Dim>(bodies, floor, settings, step, cells, history);
+        const double v = bodies[0].velocity[Dim - 1];
+        const double new_gap = bodies[0].centre[Dim - 1] - a;
+        EXPECT_LE(v, 1e-15 * 0.01) << "sub-step " << s;          // never reverses
+        EXPECT_LE(-v, speed + 1e-15 * 0.01) << "sub-step " << s; // decelerates monotonically
+        EXPECT_LE(new_gap, gap);
+        EXPECT_GT(new_gap, roughness) << "sub-step " << s; // stops above the roughness
+        speed = -v;
+        gap = new_gap;
+    }
+    EXPECT_LT(speed, 1e-6);
+}
+
+TEST(Lubrication, BodiesWithinRangeCountAsInContact)
+{
+    // A sphere 1 mm above the floor, range 2 mm: moved by the DEM for the step (paper coupling)
+    // with lubrication on; untouched, as before, with it off.
+    const double a = 0.01;
+    for (const bool is_on : {true, false}) {
+        std::vector<Particle<3>> bodies{
+            test::ball<3>(Vec<3>(0.05, 0.05, a + 1e-3), Vec<3>(0.0, 0.0, -0.001), a, 2000.0)};
+        const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
+        DemSettings settings = lubricated(1.0, 0.002, 10);
+        settings.lubrication.is_enabled = is_on;
+        CellList<3> cells(floor.origin, floor.length, 0.03);
+        ContactHistory<3> history;
+        test::step_dem<3>(bodies, floor, settings, 1e-3, cells, history);
+        EXPECT_EQ(bodies[0].contact.is_in_contact, is_on);
+        EXPECT_EQ(bodies[0].contact.mean_force.z() > 0.0, is_on);
+    }
+}
+
+TEST(Lubrication, ImplicitDampingIsStableWhenStiff)
+{
+    check_stiff_approach<2>();
+    check_stiff_approach<3>();
+}
+
+} // namespace
+} // namespace fddem
