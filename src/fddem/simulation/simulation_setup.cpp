@@ -4,6 +4,8 @@
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/markers.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <string>
 
@@ -80,9 +82,11 @@ MarkerSet<Dim> body_markers(const Ball<Dim>& ball, int n_rings, const CaseConfig
     const double retraction = coupling.marker_retraction * h;
     if (retraction >= 0.5 * ball.radius()) {
         throw InputError(config.source_file, 0, "coupling.marker_retraction",
-                         "retracts the markers by " + std::to_string(retraction) +
-                             ", not less than half the radius " + std::to_string(ball.radius()) +
-                             " of a body: refine the grid or lower the retraction");
+                         fmt::format("retracts the outer marker ring by {:g} ({:g} h), not less "
+                                     "than half the radius ({:g}) of a body of diameter {:g}: "
+                                     "refine the grid or lower the retraction",
+                                     retraction, coupling.marker_retraction, 0.5 * ball.radius(),
+                                     2.0 * ball.radius()));
     }
     return make_retracted_ball_markers(
         ball,
