@@ -15,9 +15,8 @@ void move_bodies(std::span<Particle<Dim>> bodies, double dt, bool is_paper_conta
         } else {
             body.centre += 0.5 * dt * (body.velocity + body.velocity_n); // eq. (17)
         }
-        if constexpr (Dim == 2) {
-            body.angle += 0.5 * dt * (body.omega + body.omega_n);
-        }
+        const AngularVec<Dim> mean_omega = 0.5 * (body.omega + body.omega_n);
+        body.orientation = turned<Dim>(body.orientation, mean_omega, dt);
     }
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// The position update of eq. (17): X^{n+1} = X^n + Δt (U^n + U^{n+1})/2, and likewise the
-/// orientation θ with ω (2D; a sphere's markers need no orientation).
+/// orientation with ω (θ in 2D, the quaternion in 3D: bodies/orientation.hpp).
 
 #include "fddem/bodies/particle.hpp"
 #include "fddem/core/periodic_domain.hpp"

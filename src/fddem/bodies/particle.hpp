@@ -7,8 +7,10 @@
 /// arrays to keep in step.
 
 #include "fddem/bodies/ball.hpp"
+#include "fddem/bodies/inertia.hpp"
 #include "fddem/bodies/marker_set.hpp"
 #include "fddem/bodies/material.hpp"
+#include "fddem/bodies/orientation.hpp"
 #include "fddem/core/vec.hpp"
 
 #include <vector>
@@ -28,15 +30,20 @@ struct MarkerCoupling {
     std::vector<Vec<Dim>> fluid;       ///< I(u) at the markers [m/s]
     std::vector<Vec<Dim>> lambda;      ///< λ [m/s²]
     std::vector<Vec<Dim>> lambda_star; ///< λ* [m/s²]
-    double fluid_second_moment = 0.0;  ///< Σ ΔV_l |r_l⊥|² [m⁵] (2D: m⁴)
-    double forcing_change = 0.0;       ///< of the last λ update (rigid_coupling.hpp) [m/s]
+    /// Σ ΔV_l (|r_l|² 1 − r_l r_lᵀ) of the markers, body frame, and (set where the markers are
+    /// placed) world frame: the fluid inertia the markers represent, divided by ρf [m⁵]
+    /// (2D: Σ ΔV_l |r_l|² [m⁴]).
+    Inertia<Dim> body_second_moment = isotropic_inertia<Dim>(0.0);
+    Inertia<Dim> fluid_second_moment = isotropic_inertia<Dim>(0.0);
+    double forcing_change = 0.0; ///< of the last λ update (rigid_coupling.hpp) [m/s]
 
     MarkerCoupling() = default;
     explicit MarkerCoupling(MarkerSet<Dim> set)
         : markers(std::move(set)), offsets(markers.size()), positions(markers.size()),
           fluid(markers.size()), lambda(markers.size(), Vec<Dim>::Zero()),
           lambda_star(markers.size(), Vec<Dim>::Zero()),
-          fluid_second_moment(markers.second_moment())
+          body_second_moment(second_moment_tensor<Dim>(markers.offsets, markers.volumes)),
+          fluid_second_moment(body_second_moment)
     {
     }
 };
@@ -64,10 +71,10 @@ struct Particle {
     Motion motion = Motion::free;
     Material material{}; ///< its surface, for contacts
 
-    Vec<Dim> centre = Vec<Dim>::Zero();          ///< [m]
-    double angle = 0.0;                          ///< orientation θ about z [rad] (2D)
-    Vec<Dim> velocity = Vec<Dim>::Zero();        ///< U [m/s]
-    AngularVec<Dim> omega = zero_angular<Dim>(); ///< ω [rad/s]
+    Vec<Dim> centre = Vec<Dim>::Zero();             ///< [m]
+    Orientation<Dim> orientation = unturned<Dim>(); ///< θ about z (2D), q (3D)
+    Vec<Dim> velocity = Vec<Dim>::Zero();           ///< U [m/s]
+    AngularVec<Dim> omega = zero_angular<Dim>();    ///< ω [rad/s]
     Vec<Dim> force = Vec<Dim>::Zero(); ///< hydrodynamic force of the last step [N] (2D: N/m)
     AngularVec<Dim> torque = zero_angular<Dim>();  ///< hydrodynamic torque of the last step [N·m]
     Vec<Dim> velocity_n = Vec<Dim>::Zero();        ///< U^n, the level the step started from
@@ -79,8 +86,14 @@ struct Particle {
     [[nodiscard]] double radius() const noexcept { return shape.radius(); }
     [[nodiscard]] double volume() const noexcept { return shape.volume(); }
     [[nodiscard]] double mass() const noexcept { return density * shape.volume(); }
-    /// Moment of inertia about the centre [kg·m²] (2D: per unit depth); a ball's is isotropic.
+    /// Moment of inertia about any axis through the centre [kg·m²] (2D: per unit depth), the
+    /// scalar the DEM uses: a ball's inertia is isotropic.
     [[nodiscard]] double inertia() const noexcept { return density * shape.second_moment(); }
+    /// The inertia tensor J_s in the world frame, as eq. (14) takes it [kg·m²].
+    [[nodiscard]] Inertia<Dim> inertia_tensor() const
+    {
+        return inertia_in_world<Dim>(orientation, isotropic_inertia<Dim>(inertia()));
+    }
     /// Moved by the fluid and by contacts; a fixed or prescribed body is not.
     [[nodiscard]] bool is_free() const noexcept { return motion == Motion::free; }
 };

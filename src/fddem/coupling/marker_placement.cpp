@@ -12,19 +12,6 @@
 namespace fddem {
 namespace {
 
-/// r turned by the body's orientation: by θ about z in 2D; a sphere's markers need not turn.
-template <int Dim>
-Vec<Dim> to_world(const Vec<Dim>& r, double angle)
-{
-    if constexpr (Dim == 2) {
-        const double cs = std::cos(angle);
-        const double sn = std::sin(angle);
-        return {cs * r.x() - sn * r.y(), sn * r.x() + cs * r.y()};
-    } else {
-        return r;
-    }
-}
-
 template <int Dim, class Kernel>
 void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time)
 {
@@ -35,9 +22,10 @@ void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time
                              "the body's motion is not finite: the coupling has blown up");
     }
     MarkerCoupling<Dim>& c = body.coupling;
+    c.fluid_second_moment = inertia_in_world<Dim>(body.orientation, c.body_second_moment);
     const PeriodicDomain<Dim> domain = grid.domain();
     for (std::size_t l = 0; l < c.markers.size(); ++l) {
-        c.offsets[l] = to_world<Dim>(c.markers.offsets[l], body.angle);
+        c.offsets[l] = to_world<Dim>(body.orientation, c.markers.offsets[l]);
         // Each marker on its own image in the box: a body across a periodic side has markers
         // on both sides, and every marker's kernel support stays within the ghost layers.
         c.positions[l] = domain.wrap(body.centre + c.offsets[l]);

@@ -26,10 +26,12 @@ rigid_velocity(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offset
     const Vec<Dim> velocity = (buoyant_mass * (in.velocity_n / dt + in.gravity) +
                                in.fluid_density * momentum + in.external_force) /
                               (in.body_density * in.volume / dt);
-    const double fluid_inertia = in.fluid_density * in.fluid_second_moment;
-    const AngularVec<Dim> omega = ((in.body_inertia - fluid_inertia) * in.omega_n / dt +
-                                   in.fluid_density * angular + in.external_torque) /
-                                  (in.body_inertia / dt);
+    const Inertia<Dim> excess = in.body_inertia - in.fluid_density * in.fluid_second_moment;
+    const AngularVec<Dim> moment = apply<Dim>(excess, in.omega_n) / dt -
+                                   gyroscopic<Dim>(excess, in.omega_n) +
+                                   in.fluid_density * angular + in.external_torque;
+    const Inertia<Dim> body_inertia_rate = in.body_inertia / dt;
+    const AngularVec<Dim> omega = solve<Dim>(body_inertia_rate, moment);
     return {velocity, omega};
 }
 

@@ -5,12 +5,14 @@
 /// on the markers (ρf λ is the force per volume added to the fluid's momentum equation).
 ///
 /// eq. (13): ρs V U^{n+1}/Δt = (ρs − ρf) V (U^n/Δt + g) + ρf Σ_l ΔV_l (u_l/Δt − λ*_l) + F_e
-/// eq. (14): J_s ω^{n+1}/Δt = (J_s − J_f) ω^n/Δt + ρf Σ_l ΔV_l r_l × (u_l/Δt − λ*_l) + M_e
-///           (a ball's inertia is isotropic, so the gyroscopic ω × Jω of 3D vanishes)
+/// eq. (14): J_s·ω^{n+1}/Δt = (J_s − J_f)·ω^n/Δt − ω^n × ((J_s − J_f)·ω^n)
+///                            + ρf Σ_l ΔV_l r_l × (u_l/Δt − λ*_l) + M_e
+///           with the tensors J (bodies/inertia.hpp; numbers in 2D, where the gyroscopic term
+///           is zero; it is zero too for a ball's isotropic J, but not for a later shape)
 /// eq. (15): λ_l = λ*_l + (U^{n+1} + ω^{n+1} × r_l − u_l)/Δt
 /// with u_l = I(u) at marker l, r_l its offset from the centre, J_s = ρs ∫|r⊥|², and
-/// J_f = ρf Σ_l ΔV_l |r_l⊥|² the fluid inertia *as the markers represent it*, so that at
-/// convergence (u_l rigid) eq. (14) is exactly the discrete form of the paper's eq. (5b).
+/// J_f = ρf Σ_l ΔV_l (|r_l|² 1 − r_l r_lᵀ) the fluid inertia *as the markers represent it*, so that
+/// at convergence (u_l rigid) eq. (14) is exactly the discrete form of the paper's eq. (5b).
 /// Dividing the particle's equation of motion ρs V dU/dt = F_H + (ρs − ρf) V g by it gives the
 /// hydrodynamic force for output: F_H = ρs V (U^{n+1} − U^n)/Δt − (ρs − ρf) V g − F_e.
 /// F_e, M_e: other forces on the body (contacts, "additive" coupling); zero in the paper.
@@ -30,15 +32,15 @@ struct RigidVelocity {
 /// The body's level-n motion and the parameters eqs. (13)–(14) need.
 template <int Dim>
 struct RigidUpdateInput {
-    Vec<Dim> velocity_n;        ///< U^n [m/s]
-    AngularVec<Dim> omega_n;    ///< ω^n [rad/s]
-    double body_density;        ///< ρs [kg/m³]
-    double volume;              ///< V [m³] (2D: m²)
-    double body_inertia;        ///< J_s [kg·m²]
-    double fluid_density;       ///< ρf [kg/m³]
-    double fluid_second_moment; ///< Σ ΔV_l |r_l⊥|² [m⁵] (2D: m⁴)
-    Vec<Dim> gravity;           ///< g [m/s²]
-    double dt;                  ///< Δt [s]
+    Vec<Dim> velocity_n;              ///< U^n [m/s]
+    AngularVec<Dim> omega_n;          ///< ω^n [rad/s]
+    double body_density;              ///< ρs [kg/m³]
+    double volume;                    ///< V [m³] (2D: m²)
+    Inertia<Dim> body_inertia;        ///< J_s, world frame [kg·m²]
+    double fluid_density;             ///< ρf [kg/m³]
+    Inertia<Dim> fluid_second_moment; ///< J_f/ρf, world frame [m⁵] (2D: m⁴)
+    Vec<Dim> gravity;                 ///< g [m/s²]
+    double dt;                        ///< Δt [s]
     /// Any other force on the body over the step, e.g. the mean contact force of the DEM
     /// sub-steps (contact.coupling = "additive") [N]; added to the right side of eq. (13).
     Vec<Dim> external_force = Vec<Dim>::Zero();

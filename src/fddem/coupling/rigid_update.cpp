@@ -28,7 +28,7 @@ RigidVelocity<Dim> new_motion(const Particle<Dim>& body, const RigidUpdateSettin
                                    body.omega_n,
                                    body.density,
                                    body.volume(),
-                                   body.inertia(),
+                                   body.inertia_tensor(),
                                    s.fluid_density,
                                    c.fluid_second_moment,
                                    s.gravity,

@@ -195,6 +195,20 @@ void check_value(const KeySpec& spec, const toml::node& node, int dimension,
             wrong_type();
         }
         return;
+    case KeyType::angular:
+        if (dimension == 2) {
+            if (!is_number(node)) {
+                doc.fail(key, &node,
+                         node.is_array() ? "a 2D case turns about z only: give one number"
+                                         : "expected a number");
+            }
+            check_range(real_value(node));
+            return;
+        }
+        if (is_number(node)) {
+            doc.fail(key, &node, "a 3D case needs the three components [x, y, z]");
+        }
+        [[fallthrough]];
     case KeyType::boolean_vector:
         if (node.is_boolean()) {
             return;
@@ -212,7 +226,8 @@ void check_value(const KeySpec& spec, const toml::node& node, int dimension,
                                  dimension));
         }
         for (const toml::node& element : *array) {
-            const bool ok = spec.type == KeyType::real_vector      ? is_number(element)
+            const bool ok = spec.type == KeyType::real_vector || spec.type == KeyType::angular
+                                ? is_number(element)
                             : spec.type == KeyType::integer_vector ? element.is_integer()
                                                                    : element.is_boolean();
             if (!ok) {
@@ -233,6 +248,9 @@ void check_value(const KeySpec& spec, const toml::node& node, int dimension,
 toml::table default_node(const KeySpec& spec, int dimension)
 {
     const std::string& text = *spec.value;
+    if (spec.type == KeyType::angular && text == "zeros" && dimension == 2) {
+        return toml::parse("v = 0.0");
+    }
     if (text == "zeros" || (spec.type == KeyType::boolean_vector && text == "false")) {
         const std::vector<std::string> entries(static_cast<std::size_t>(dimension),
                                                text == "zeros" ? "0.0" : "false");
@@ -335,6 +353,11 @@ KeyValue value_of(const KeySpec& spec, const toml::node& node, int dimension)
             return std::vector<bool>(static_cast<std::size_t>(dimension), boolean(node));
         }
         return elements(boolean);
+    case KeyType::angular:
+        if (node.is_array()) {
+            return elements(real);
+        }
+        return std::vector<double>{real(node)};
     }
     return {};
 }

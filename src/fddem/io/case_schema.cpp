@@ -321,8 +321,9 @@ std::vector<KeySpec> case_schema()
     s.push_back(body_key(key("bodies", "velocity", T::real_vector, "m/s", "zeros",
                              "Initial velocity; for motion = \"prescribed\" the velocity kept."),
                          &BodyConfig::velocity));
-    s.push_back(body_key(key("bodies", "omega", T::real, "rad/s", "0.0",
-                             "Initial angular velocity about z (2D); kept for prescribed motion."),
+    s.push_back(body_key(key("bodies", "omega", T::angular, "rad/s", "zeros",
+                             "Initial angular velocity: a number (about z) in 2D, [ωx, ωy, ωz] "
+                             "in 3D; kept for prescribed motion."),
                          &BodyConfig::omega));
     s.push_back(body_key(key("bodies", "motion", T::string, none, "\"free\"",
                              "free (moved by fluid and gravity), prescribed (keeps its velocity), "
@@ -606,6 +607,8 @@ std::string type_name(KeyType type)
         return "[integer; dim]";
     case KeyType::boolean_vector:
         return "[boolean; dim] or boolean";
+    case KeyType::angular:
+        return "number (2D) or [number; 3] (3D)";
     }
     return "?";
 }

@@ -27,11 +27,12 @@ enum class KeyType {
     real_vector,    ///< one number per axis
     integer_vector, ///< one whole number per axis
     boolean_vector, ///< one true/false per axis
+    angular,        ///< an angular quantity: a number (about z) in 2D, three numbers in 3D
 };
 
 /// A key's value as read, by its KeyType: real → double, integer → int64, string, boolean,
 /// real_vector → vector<double>, integer_vector → vector<int64>, boolean_vector → vector<bool>
-/// (one entry per axis).
+/// (one entry per axis), angular → vector<double> (one entry in 2D, three in 3D).
 using KeyValue = std::variant<double, std::int64_t, std::string, bool, std::vector<double>,
                               std::vector<std::int64_t>, std::vector<bool>>;
 

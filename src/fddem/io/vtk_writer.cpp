@@ -121,25 +121,24 @@ void write_vtr(const std::filesystem::path& path, const MacGrid<Dim>& grid, cons
     write_file_atomically(path, text);
 }
 
-void write_vtp(const std::filesystem::path& path, const std::vector<std::array<double, 3>>& centres,
-               const std::vector<double>& radii,
-               const std::vector<std::array<double, 3>>& velocities,
-               const std::vector<std::array<double, 3>>& angular_velocities)
+void write_vtp(const std::filesystem::path& path, const ParticlePoints& bodies)
 {
-    const std::size_t n = centres.size();
-    const auto flatten = [](const std::vector<std::array<double, 3>>& v) {
+    const std::size_t n = bodies.centres.size();
+    const auto flatten = [](const auto& v) {
         std::vector<double> out;
-        out.reserve(3 * v.size());
         for (const auto& x : v) {
             out.insert(out.end(), x.begin(), x.end());
         }
         return out;
     };
     Appended data;
-    const std::uint64_t points = data.add(flatten(centres));
-    const std::uint64_t radius = data.add(radii);
-    const std::uint64_t velocity = data.add(flatten(velocities));
-    const std::uint64_t omega = data.add(flatten(angular_velocities));
+    const std::uint64_t points = data.add(flatten(bodies.centres));
+    const std::uint64_t id = data.add(bodies.ids);
+    const std::uint64_t radius = data.add(bodies.radii);
+    const std::uint64_t velocity = data.add(flatten(bodies.velocities));
+    const std::uint64_t omega = data.add(flatten(bodies.angular_velocities));
+    const std::uint64_t orientation = data.add(flatten(bodies.orientations));
+    const std::uint64_t axis = data.add(flatten(bodies.body_axes));
     // One vertex cell per body so ParaView draws the centres without a filter.
     std::vector<std::int64_t> ids(n);
     std::vector<std::int64_t> ends(n);
@@ -157,14 +156,19 @@ void write_vtp(const std::filesystem::path& path, const std::vector<std::array<d
                         n, n);
     text += fmt::format(
         "      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n"
+        "        <DataArray type=\"Float64\" Name=\"id\" format=\"appended\" offset=\"{}\"/>\n"
         "        <DataArray type=\"Float64\" Name=\"radius\" format=\"appended\" "
         "offset=\"{}\"/>\n"
         "        <DataArray type=\"Float64\" Name=\"velocity\" NumberOfComponents=\"3\" "
         "format=\"appended\" offset=\"{}\"/>\n"
         "        <DataArray type=\"Float64\" Name=\"angular_velocity\" "
         "NumberOfComponents=\"3\" format=\"appended\" offset=\"{}\"/>\n"
+        "        <DataArray type=\"Float64\" Name=\"orientation\" "
+        "NumberOfComponents=\"4\" format=\"appended\" offset=\"{}\"/>\n"
+        "        <DataArray type=\"Float64\" Name=\"body_axis\" "
+        "NumberOfComponents=\"3\" format=\"appended\" offset=\"{}\"/>\n"
         "      </PointData>\n",
-        radius, velocity, omega);
+        id, radius, velocity, omega, orientation, axis);
     text +=
         fmt::format("      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
                     "format=\"appended\" offset=\"{}\"/>\n      </Points>\n",

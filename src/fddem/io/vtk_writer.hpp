@@ -20,12 +20,23 @@ template <int Dim>
 void write_vtr(const std::filesystem::path& path, const MacGrid<Dim>& grid, const FaceField<Dim>& u,
                const CellField<Dim>& p);
 
-/// Particles for ParaView: a PolyData (.vtp) of the body centres with point data radius,
-/// velocity and angular velocity (draw disks with the Glyph filter scaled by "radius"). Atomic.
-void write_vtp(const std::filesystem::path& path, const std::vector<std::array<double, 3>>& centres,
-               const std::vector<double>& radii,
-               const std::vector<std::array<double, 3>>& velocities,
-               const std::vector<std::array<double, 3>>& angular_velocities);
+/// The bodies of one particles frame, one entry per body, padded to 3D.
+struct ParticlePoints {
+    std::vector<double> ids;
+    std::vector<std::array<double, 3>> centres;            ///< [m]
+    std::vector<double> radii;                             ///< [m]
+    std::vector<std::array<double, 3>> velocities;         ///< [m/s]
+    std::vector<std::array<double, 3>> angular_velocities; ///< [rad/s]
+    std::vector<std::array<double, 4>> orientations;       ///< q_w, q_x, q_y, q_z (2D: about z)
+    /// The body frame's x axis in the world frame: a unit vector that turns with the body
+    /// (glyph it as an arrow to see a sphere roll).
+    std::vector<std::array<double, 3>> body_axes;
+};
+
+/// Particles for ParaView: a PolyData (.vtp) of the body centres with point data id, radius,
+/// velocity, angular velocity, orientation and body axis (draw disks or spheres with the Glyph
+/// filter scaled by "radius"; open_in_paraview.py does). Atomic.
+void write_vtp(const std::filesystem::path& path, const ParticlePoints& bodies);
 
 /// The .pvd collection: (time, file relative to the .pvd) pairs, rewritten atomically.
 class PvdCollection {

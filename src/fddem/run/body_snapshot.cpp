@@ -14,7 +14,7 @@ std::vector<BodySnapshot<Dim>> body_snapshots(const Simulation<Dim>& sim)
                              .centre = body.centre,
                              .velocity = body.velocity,
                              .omega = body.omega,
-                             .angle = body.angle,
+                             .orientation = body.orientation,
                              .force = body.force,
                              .torque = body.torque,
                              .contact_force = body.contact.mean_force,

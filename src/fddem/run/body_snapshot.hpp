@@ -18,7 +18,7 @@ struct BodySnapshot {
     Vec<Dim> centre = Vec<Dim>::Zero();                   ///< [m]
     Vec<Dim> velocity = Vec<Dim>::Zero();                 ///< U [m/s]
     AngularVec<Dim> omega = zero_angular<Dim>();          ///< ω [rad/s]
-    double angle = 0.0;                                   ///< orientation θ about z [rad] (2D)
+    Orientation<Dim> orientation = unturned<Dim>();       ///< θ [rad] (2D), q (3D)
     Vec<Dim> force = Vec<Dim>::Zero();                    ///< hydrodynamic, last step [N]
     AngularVec<Dim> torque = zero_angular<Dim>();         ///< hydrodynamic, last step [N·m]
     Vec<Dim> contact_force = Vec<Dim>::Zero();            ///< mean over the DEM sub-steps [N]

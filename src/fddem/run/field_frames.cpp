@@ -37,6 +37,17 @@ std::array<double, 3> spin_vector(const AngularVec<Dim>& omega)
     }
 }
 
+/// An orientation as the unit quaternion q_w, q_x, q_y, q_z: a turn by θ about z in 2D.
+template <int Dim>
+std::array<double, 4> quaternion_of(const Orientation<Dim>& orientation)
+{
+    if constexpr (Dim == 2) {
+        return {std::cos(0.5 * orientation), 0.0, 0.0, std::sin(0.5 * orientation)};
+    } else {
+        return {orientation.w(), orientation.x(), orientation.y(), orientation.z()};
+    }
+}
+
 } // namespace
 
 template <int Dim>
@@ -53,19 +64,19 @@ void write_frame(const Simulation<Dim>& sim, const fs::path& directory, PvdColle
     if (bodies.empty()) {
         return;
     }
-    std::vector<std::array<double, 3>> centres;
-    std::vector<double> radii;
-    std::vector<std::array<double, 3>> velocities;
-    std::vector<std::array<double, 3>> spins;
+    ParticlePoints points;
     for (const BodySnapshot<Dim>& body : bodies) {
-        centres.push_back(padded<Dim>(body.centre));
-        radii.push_back(body.radius);
-        velocities.push_back(padded<Dim>(body.velocity));
-        spins.push_back(spin_vector<Dim>(body.omega));
+        points.ids.push_back(body.id);
+        points.centres.push_back(padded<Dim>(body.centre));
+        points.radii.push_back(body.radius);
+        points.velocities.push_back(padded<Dim>(body.velocity));
+        points.angular_velocities.push_back(spin_vector<Dim>(body.omega));
+        points.orientations.push_back(quaternion_of<Dim>(body.orientation));
+        points.body_axes.push_back(padded<Dim>(to_world<Dim>(body.orientation, Vec<Dim>::UnitX())));
     }
     const std::string file = fmt::format("particles/particles_{:06d}.vtp", frame);
     fs::create_directories(directory / "particles");
-    write_vtp(directory / file, centres, radii, velocities, spins);
+    write_vtp(directory / file, points);
     particles.add(sim.clock().time, file);
 }
 

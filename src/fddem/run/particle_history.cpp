@@ -6,8 +6,8 @@
 namespace fddem {
 namespace {
 
-/// The one list of particles.csv's columns, for 2D and 3D (csv_columns.hpp). The orientation θ
-/// is a single angle in 2D only, and 3D has never written its contact torque: both stay 2D.
+/// The one list of particles.csv's columns, for 2D and 3D (csv_columns.hpp). The orientation is
+/// θ in 2D and the unit quaternion q_w, q_x, q_y, q_z (body frame → world frame) in 3D.
 template <int Dim>
 auto particle_row(double time, const BodySnapshot<Dim>& body)
 {
@@ -18,14 +18,17 @@ auto particle_row(double time, const BodySnapshot<Dim>& body)
         visit_components<Dim>(visit, "", velocity_names, body.velocity);
         visit_angular<Dim>(visit, "omega", body.omega);
         if constexpr (Dim == 2) {
-            visit(ColumnName{"theta"}, body.angle);
+            visit(ColumnName{"theta"}, body.orientation);
+        } else {
+            visit(ColumnName{"q_w"}, body.orientation.w());
+            visit(ColumnName{"q_x"}, body.orientation.x());
+            visit(ColumnName{"q_y"}, body.orientation.y());
+            visit(ColumnName{"q_z"}, body.orientation.z());
         }
         visit_components<Dim>(visit, "f", axis_names, body.force);
         visit_angular<Dim>(visit, "torque", body.torque);
         visit_components<Dim>(visit, "contact_f", axis_names, body.contact_force);
-        if constexpr (Dim == 2) {
-            visit(ColumnName{"contact_torque"}, body.contact_torque);
-        }
+        visit_angular<Dim>(visit, "contact_torque", body.contact_torque);
     };
 }
 

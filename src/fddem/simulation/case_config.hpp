@@ -108,7 +108,7 @@ struct BodyConfig {
     double density = 1.0;         ///< ρs [kg/m³] (given, or derived from [nondimensional])
     std::vector<double> position; ///< centre [m]
     std::vector<double> velocity; ///< initial (or prescribed) U [m/s]
-    double omega = 0.0;           ///< initial (or prescribed) ω [rad/s] (2D)
+    std::vector<double> omega;    ///< initial (or prescribed) ω [rad/s]: ω_z (2D), ω (3D)
     Motion motion = Motion::free;
     int n_rings = 0; ///< N_a; 0: from coupling.marker_spacing_ratio
     SurfaceKeys surface;

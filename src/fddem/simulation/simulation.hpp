@@ -158,7 +158,11 @@ private:
         check_body_count(n_bodies, self.bodies_.size());
         for (auto& body : self.bodies_) {
             archive("body.centre", body.centre);
-            archive("body.angle", body.angle);
+            if constexpr (Dim == 2) {
+                archive("body.angle", body.orientation);
+            } else {
+                archive("body.orientation", body.orientation.coeffs()); // x, y, z, w
+            }
             archive("body.velocity", body.velocity);
             archive("body.omega", body.omega);
             archive("body.force", body.force);

@@ -68,6 +68,16 @@ Vec<Dim> vector_of(const std::vector<double>& values)
     return v;
 }
 
+template <int Dim>
+AngularVec<Dim> angular_of(const std::vector<double>& values)
+{
+    if constexpr (Dim == 2) {
+        return values.empty() ? 0.0 : values.front();
+    } else {
+        return vector_of<3>(values);
+    }
+}
+
 /// The markers of a ball: the paper's layout, or the outer ring `coupling.marker_retraction` h
 /// inside the surface; N_a from bodies.n_rings, else from coupling.marker_spacing_ratio.
 template <int Dim>
@@ -110,8 +120,8 @@ Particles<Dim> make_particles(const CaseConfig& config, const MacGrid<Dim>& grid
         if (body.motion != Motion::fixed) {
             body.velocity = vector_of<Dim>(b.velocity);
         }
-        if constexpr (Dim == 2) {
-            body.omega = body.motion == Motion::fixed ? 0.0 : b.omega;
+        if (body.motion != Motion::fixed) {
+            body.omega = angular_of<Dim>(b.omega);
         }
         body.coupling = MarkerCoupling<Dim>(
             body_markers(body.shape, b.n_rings, config, grid.spacing().maxCoeff()));
@@ -172,6 +182,7 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
     template MacGrid<DIM> make_grid<DIM>(const CaseConfig&);                                       \
     template BoundaryConditions<DIM> make_boundary_conditions<DIM>(const CaseConfig&);             \
     template Vec<DIM> vector_of<DIM>(const std::vector<double>&);                                  \
+    template AngularVec<DIM> angular_of<DIM>(const std::vector<double>&);                          \
     template Particles<DIM> make_particles<DIM>(const CaseConfig&, const MacGrid<DIM>&);           \
     template std::optional<ContactSetup<DIM>> make_contact_setup<DIM>(                             \
         const CaseConfig&, const MacGrid<DIM>&, const BoundaryConditions<DIM>&,                    \

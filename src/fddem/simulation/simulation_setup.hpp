@@ -24,6 +24,11 @@ template <int Dim>
 template <int Dim>
 [[nodiscard]] Vec<Dim> vector_of(const std::vector<double>& values);
 
+/// A case's angular quantity (bodies.omega): ω_z in 2D, the three components in 3D (missing
+/// ones 0).
+template <int Dim>
+[[nodiscard]] AngularVec<Dim> angular_of(const std::vector<double>& values);
+
 /// The case's bodies, with ids 0, 1, … in the order of [[bodies]] and their markers in the body
 /// frame (N_a from bodies.n_rings or coupling.marker_spacing_ratio).
 template <int Dim>

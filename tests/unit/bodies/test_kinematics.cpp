@@ -38,7 +38,7 @@ TEST(Kinematics, AngleFollowsOmegaAndFixedBodiesStay)
     bodies[1].motion = Motion::fixed;
     bodies[1].velocity = Vec<2>(1.0, 1.0); // ignored: a fixed body does not move
     move_bodies<2>(bodies, 0.5, false);
-    EXPECT_DOUBLE_EQ(bodies[0].angle, 1.0); // Δt (ω^n + ω^{n+1})/2
+    EXPECT_DOUBLE_EQ(bodies[0].orientation, 1.0); // Δt (ω^n + ω^{n+1})/2
     EXPECT_EQ(bodies[1].centre, Vec<2>::Zero());
 }
 

@@ -36,7 +36,7 @@ Particle<2> disk_at(const Vec<2>& centre, double diameter = 0.3)
 TEST(MarkerPlacement, TurnsTheLayoutWithTheBodyAndCarriesItToTheCentre)
 {
     std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.4))};
-    bodies[0].angle = 0.5 * std::numbers::pi;
+    bodies[0].orientation = 0.5 * std::numbers::pi;
     place_markers<2>(bodies, unit_box(), AnyKernel{HatKernel{}}, 0, 0.0);
     const MarkerCoupling<2>& c = bodies[0].coupling;
     for (std::size_t l = 0; l < c.markers.size(); ++l) {

@@ -119,6 +119,38 @@ end = 1.0
     EXPECT_EQ(c.walls.velocity.size(), 3U);
 }
 
+TEST(CaseReader, AngularVelocityIsANumberIn2DAndAVectorIn3D)
+{
+    const std::string sphere = R"([domain]
+size = [1.0, 1.0, 1.0]
+cells = [32, 32, 32]
+[fluid]
+density = 1.0
+viscosity = 1.0
+[time]
+dt = 0.1
+end = 1.0
+[[bodies]]
+shape = "sphere"
+diameter = 0.25
+density = 2.0
+position = [0.5, 0.5, 0.5]
+omega = [1.0, -2.0, 3.5]
+[[bodies]]
+shape = "sphere"
+diameter = 0.25
+density = 2.0
+position = [0.5, 0.5, 0.15]
+)";
+    const CaseConfig c = read_case_string(sphere, "3d.toml");
+    EXPECT_EQ(c.bodies[0].omega, (std::vector<double>{1.0, -2.0, 3.5}));
+    EXPECT_EQ(c.bodies[1].omega, (std::vector<double>{0.0, 0.0, 0.0})); // the default
+    const CaseConfig disk = read_case_string(valid_case + "[[bodies]]\ndiameter = 0.5\n"
+                                                          "density = 2.0\nposition = [0.5, 1.0]\n",
+                                             "2d.toml");
+    EXPECT_EQ(disk.bodies[0].omega, (std::vector<double>{0.0})); // the default
+}
+
 struct BadCase {
     const char* name;
     std::string text;                   ///< the case text
@@ -142,6 +174,20 @@ std::vector<BadCase> bad_cases()
     const std::string f = "bad.toml";
     const std::string body = "[[bodies]]\ndiameter = 0.5\ndensity = 2.0\nposition = [0.5, 1.0]\n";
     return {
+        {"omega_vector_in_2d",
+         v + body + "omega = [1.0, 2.0]\n",
+         {},
+         f,
+         22,
+         "bodies.omega",
+         "a 2D case turns about z only: give one number"},
+        {"omega_text",
+         v + body + "omega = \"fast\"\n",
+         {},
+         f,
+         22,
+         "bodies.omega",
+         "expected a number"},
         {"syntax",
          replace(v, "density = 1.0", "density = = 1.0"),
          {},
@@ -1095,7 +1141,7 @@ substeps = 400
     EXPECT_EQ(b.density, 2.0);
     EXPECT_EQ(b.position, (std::vector<double>{0.5, 1.0}));
     EXPECT_EQ(b.velocity, (std::vector<double>{0.1, -0.2}));
-    EXPECT_EQ(b.omega, 0.3);
+    EXPECT_EQ(b.omega, (std::vector<double>{0.3}));
     EXPECT_EQ(b.motion, Motion::prescribed);
     EXPECT_EQ(b.n_rings, 5);
     EXPECT_EQ(b.material.friction, 0.4);

@@ -56,8 +56,9 @@ TEST(OutputColumns, ParticleColumnsAreTheDocumentedOnes)
     EXPECT_EQ(joined(particle_columns<2>()),
               "time,id,x,y,u,v,omega,theta,fx,fy,torque,contact_fx,contact_fy,contact_torque");
     EXPECT_EQ(joined(particle_columns<3>()),
-              "time,id,x,y,z,u,v,w,omega_x,omega_y,omega_z,fx,fy,fz,torque_x,torque_y,torque_z,"
-              "contact_fx,contact_fy,contact_fz");
+              "time,id,x,y,z,u,v,w,omega_x,omega_y,omega_z,q_w,q_x,q_y,q_z,fx,fy,fz,torque_x,"
+              "torque_y,torque_z,contact_fx,contact_fy,contact_fz,contact_torque_x,"
+              "contact_torque_y,contact_torque_z");
 }
 
 TEST(OutputColumns, SampleColumnsAreTheDocumentedOnes)
@@ -73,7 +74,7 @@ TEST(OutputColumns, EachParticleValueLandsInItsColumn)
                          .centre = {1.0, 2.0},
                          .velocity = {3.0, 4.0},
                          .omega = 5.0,
-                         .angle = 6.0,
+                         .orientation = 6.0,
                          .force = {7.0, 8.0},
                          .torque = 9.0,
                          .contact_force = {10.0, 11.0},
@@ -102,7 +103,7 @@ TEST(OutputColumns, EachParticleValueLandsInItsColumn)
                            .centre = {1.0, 2.0, 3.0},
                            .velocity = {4.0, 5.0, 6.0},
                            .omega = {7.0, 8.0, 9.0},
-                           .angle = 0.0,
+                           .orientation = Eigen::Quaterniond(0.5, 0.5, -0.5, 0.5),
                            .force = {10.0, 11.0, 12.0},
                            .torque = {13.0, 14.0, 15.0},
                            .contact_force = {16.0, 17.0, 18.0},
@@ -111,13 +112,33 @@ TEST(OutputColumns, EachParticleValueLandsInItsColumn)
                           [&sphere](CsvHistory& history) {
                               append_particle_rows<3>(history, 0.5, std::span(&sphere, 1));
                           }),
-              (Row{{"time", 0.5},        {"id", 7.0},         {"x", 1.0},
-                   {"y", 2.0},           {"z", 3.0},          {"u", 4.0},
-                   {"v", 5.0},           {"w", 6.0},          {"omega_x", 7.0},
-                   {"omega_y", 8.0},     {"omega_z", 9.0},    {"fx", 10.0},
-                   {"fy", 11.0},         {"fz", 12.0},        {"torque_x", 13.0},
-                   {"torque_y", 14.0},   {"torque_z", 15.0},  {"contact_fx", 16.0},
-                   {"contact_fy", 17.0}, {"contact_fz", 18.0}}));
+              (Row{{"time", 0.5},
+                   {"id", 7.0},
+                   {"x", 1.0},
+                   {"y", 2.0},
+                   {"z", 3.0},
+                   {"u", 4.0},
+                   {"v", 5.0},
+                   {"w", 6.0},
+                   {"omega_x", 7.0},
+                   {"omega_y", 8.0},
+                   {"omega_z", 9.0},
+                   {"q_w", 0.5},
+                   {"q_x", 0.5},
+                   {"q_y", -0.5},
+                   {"q_z", 0.5},
+                   {"fx", 10.0},
+                   {"fy", 11.0},
+                   {"fz", 12.0},
+                   {"torque_x", 13.0},
+                   {"torque_y", 14.0},
+                   {"torque_z", 15.0},
+                   {"contact_fx", 16.0},
+                   {"contact_fy", 17.0},
+                   {"contact_fz", 18.0},
+                   {"contact_torque_x", 19.0},
+                   {"contact_torque_y", 20.0},
+                   {"contact_torque_z", 21.0}}));
 }
 
 TEST(OutputColumns, EachSolverValueLandsInItsColumn)
