@@ -66,6 +66,25 @@ DemWalls<Dim> box(const Vec<Dim>& length, const std::array<bool, Dim>& walled,
     return walls;
 }
 
+/// The overlap α at which `model` pushes with `load` [N] at rest (F_n(α, α̇ = 0) = load), by
+/// bisection on [0, upper] [m].
+inline double static_overlap(const AnyContactModel& model, const ContactPair& pair, double load,
+                             double upper)
+{
+    double low = 0.0;
+    double high = upper;
+    for (int k = 0; k < 100; ++k) {
+        const double mid = 0.5 * (low + high);
+        const double force = std::visit(
+            [&](const auto& m) {
+                return m.law({mid, 0.0}, pair).normal_force;
+            },
+            model);
+        (force < load ? low : high) = mid;
+    }
+    return low;
+}
+
 /// A point on axis `axis` of a Dim-vector: value `x` along `axis`, `rest` elsewhere.
 template <int Dim>
 Vec<Dim> along(int axis, double x, double rest = 0.0)
