@@ -26,6 +26,22 @@ Particle<Dim> ball(const Vec<Dim>& centre, const Vec<Dim>& velocity, double radi
     return b;
 }
 
+/// One call of advance_contacts on bodies with the ids they have (in any order), after which
+/// each body takes the DEM's end state as its own.
+template <int Dim>
+DemOutcome step_dem_keeping_ids(std::vector<Particle<Dim>>& bodies, const DemWalls<Dim>& walls,
+                                const DemSettings& settings, double dt, CellList<Dim>& cells,
+                                ContactHistory<Dim>& history)
+{
+    const DemOutcome outcome = advance_contacts<Dim>(bodies, walls, settings, dt, cells, history);
+    for (Particle<Dim>& b : bodies) {
+        b.centre = b.contact.centre;
+        b.velocity = b.contact.velocity;
+        b.omega = b.contact.omega;
+    }
+    return outcome;
+}
+
 /// One call of advance_contacts on bodies numbered by their position (as the body store numbers
 /// them), after which each body takes the DEM's end state as its own: the DEM alone, as the
 /// paper's coupling moves a body in contact.
@@ -37,13 +53,7 @@ DemOutcome step_dem(std::vector<Particle<Dim>>& bodies, const DemWalls<Dim>& wal
     for (std::size_t k = 0; k < bodies.size(); ++k) {
         bodies[k].id = static_cast<int>(k);
     }
-    const DemOutcome outcome = advance_contacts<Dim>(bodies, walls, settings, dt, cells, history);
-    for (Particle<Dim>& b : bodies) {
-        b.centre = b.contact.centre;
-        b.velocity = b.contact.velocity;
-        b.omega = b.contact.omega;
-    }
-    return outcome;
+    return step_dem_keeping_ids<Dim>(bodies, walls, settings, dt, cells, history);
 }
 
 /// The box [0, length] with walls across the axes marked in `walled`.
@@ -54,6 +64,25 @@ DemWalls<Dim> box(const Vec<Dim>& length, const std::array<bool, Dim>& walled,
     DemWalls<Dim> walls{Vec<Dim>::Zero(), length, walled};
     walls.material = material;
     return walls;
+}
+
+/// The overlap α at which `model` pushes with `load` [N] at rest (F_n(α, α̇ = 0) = load), by
+/// bisection on [0, upper] [m].
+inline double static_overlap(const AnyContactModel& model, const ContactPair& pair, double load,
+                             double upper)
+{
+    double low = 0.0;
+    double high = upper;
+    for (int k = 0; k < 100; ++k) {
+        const double mid = 0.5 * (low + high);
+        const double force = std::visit(
+            [&](const auto& m) {
+                return m.law({mid, 0.0}, pair).normal_force;
+            },
+            model);
+        (force < load ? low : high) = mid;
+    }
+    return low;
 }
 
 /// A point on axis `axis` of a Dim-vector: value `x` along `axis`, `rest` elsewhere.

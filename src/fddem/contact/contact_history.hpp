@@ -16,7 +16,9 @@ namespace fddem {
 
 /// Which two things touch: the body of id `first` and `second`, another body's id (the
 /// larger) or, if negative, a wall: −1 − (2·axis + side), side 0 the low wall. Ids are stable
-/// (bodies/particle.hpp), so a spring follows its contact when bodies enter, leave or migrate.
+/// (bodies/particle.hpp), so a spring follows its contact when bodies enter, leave, migrate or
+/// are stored in another order: the key does not depend on the order in which the DEM meets
+/// the pair (pair_contact_key).
 struct ContactKey {
     int first = 0;
     int second = 0;
@@ -30,10 +32,24 @@ struct ContactKey {
     return {body, -1 - (2 * axis + side)};
 }
 
+/// The key of the contact between the bodies of ids a and b, met in either order.
+[[nodiscard]] inline ContactKey pair_contact_key(int a, int b) noexcept
+{
+    return a < b ? ContactKey{a, b} : ContactKey{b, a};
+}
+
+/// +1 if the DEM meets a pair in its key's order (first body, then second), −1 if the other way
+/// round: the stored ξ is then negated on reading and on writing.
+[[nodiscard]] inline double key_orientation(int first_met, int second_met) noexcept
+{
+    return first_met < second_met ? 1.0 : -1.0;
+}
+
 template <int Dim>
 struct TangentialSpring {
     ContactKey key;
-    Vec<Dim> displacement = Vec<Dim>::Zero(); ///< ξ [m]
+    /// ξ of the key's second (the larger id, or the wall) relative to its first [m]
+    Vec<Dim> displacement = Vec<Dim>::Zero();
 
     /// Lists the members for a checkpoint archive (io/checkpoint_archive.hpp).
     template <class Self, class Archive>

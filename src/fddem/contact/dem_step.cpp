@@ -77,7 +77,8 @@ public:
                 mark_if_near(g.overlap, a, b);
                 continue;
             }
-            apply(g, a, b, {bodies[a].id, bodies[b].id},
+            apply(g, a, b, pair_contact_key(bodies[a].id, bodies[b].id),
+                  key_orientation(bodies[a].id, bodies[b].id),
                   make_contact_pair(side_of(bodies[a]), side_of(bodies[b])),
                   std::min(bodies[a].radius(), bodies[b].radius()), outcome);
         }
@@ -93,7 +94,7 @@ public:
                                   walls_.velocity[axis][static_cast<std::size_t>(side)]);
             mark_if_near(g.overlap, a, bodies.size());
             if (g.overlap > 0.0) {
-                apply(g, a, bodies.size(), wall_contact_key(bodies[a].id, d, side),
+                apply(g, a, bodies.size(), wall_contact_key(bodies[a].id, d, side), 1.0,
                       make_contact_pair(side_of(bodies[a]), wall_side(walls_.material)),
                       bodies[a].radius(), outcome);
             }
@@ -154,21 +155,22 @@ private:
     }
 
     /// The model's normal force F_n n, the friction force F_t and the rolling torque on both
-    /// bodies; `second` = n is a wall.
+    /// bodies; `second` = n is a wall. `orientation` = key_orientation of the pair as met here:
+    /// the spring is stored as the key's second body's displacement relative to its first.
     void apply(const ContactGeometry<Dim>& g, std::size_t first, std::size_t second,
-               const ContactKey& key, const ContactPair& pair, double smaller_radius,
-               DemOutcome& outcome)
+               const ContactKey& key, double orientation, const ContactPair& pair,
+               double smaller_radius, DemOutcome& outcome)
     {
         const ContactLaw law = model_.law({g.overlap, g.overlap_rate}, pair);
         Vec<Dim> on_second = law.normal_force * g.normal;
         AngularVec<Dim> rolling = zero_angular<Dim>();
         if (pair.friction > 0.0) {
             const TangentialSpring<Dim>* old = previous_.find(key);
-            TangentialSpring<Dim> spring{key, old != nullptr ? old->displacement
-                                                             : Vec<Dim>(Vec<Dim>::Zero())};
-            on_second += tangential_force<Dim>(g.normal, g.slip_velocity, law, pair.friction,
-                                               stretch_, spring.displacement);
-            history_.springs.push_back(spring);
+            Vec<Dim> xi = old != nullptr ? Vec<Dim>(orientation * old->displacement)
+                                         : Vec<Dim>(Vec<Dim>::Zero());
+            on_second +=
+                tangential_force<Dim>(g.normal, g.slip_velocity, law, pair.friction, stretch_, xi);
+            history_.springs.push_back({key, Vec<Dim>(orientation * xi)});
         }
         if (pair.rolling_friction > 0.0) {
             rolling = rolling_torque<Dim>(g.rolling_omega, g.normal, law.normal_force, pair, step_);

@@ -19,6 +19,9 @@
 /// rolling. fddem's regularisation: |M_r| is at most J* |ω_r| / Δt_i, the torque that stops the
 /// relative rolling within one sub-step, so that the torque does not flip sign from sub-step to
 /// sub-step once the rolling has stopped (there M_r acts as a viscous damper that holds it).
+/// Limits of that damper (docs/method.md §6, "Contacts in 3D"): a sustained rolling load M below
+/// μ_r R* F_n is not held exactly but creeps at |ω_r| = M Δt_i / J*, and the dampers of a ball's
+/// several contacts add up and can overshoot; a pile keeps moving at about 1e-5 m/s.
 
 #include "fddem/contact/contact_model.hpp"
 #include "fddem/core/vec.hpp"

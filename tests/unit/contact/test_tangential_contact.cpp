@@ -111,17 +111,7 @@ Throw throw_ball(const AnyContactModel& model, const Material& surface, double v
     // Static overlap: F_n(α) = m g, by bisection on the model's law.
     const ContactPair pair = make_contact_pair(
         ball_side(b.mass(), b.inertia(), radius, surface, true), wall_side(surface));
-    double low = 0.0;
-    double high = 0.1 * radius;
-    for (int k = 0; k < 100; ++k) {
-        const double mid = 0.5 * (low + high);
-        const double force = std::visit(
-            [&](const auto& m) {
-                return m.law({mid, 0.0}, pair).normal_force;
-            },
-            model);
-        (force < b.mass() * gravity ? low : high) = mid;
-    }
+    const double low = test::static_overlap(model, pair, b.mass() * gravity, 0.1 * radius);
     b.centre = along<Dim>(1, radius - low, 1.0);
     const double x0 = b.centre.x();
     const double step = 2e-5;
