@@ -23,9 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 
 /// Trial centres per body of a random insertion before it gives up. Near the jamming fraction
-/// the share of trials that succeed falls towards 0; 10⁴ per body reach 0.37 of 3D's 0.384 and
-/// 0.53 of 2D's 0.547 in a region of 20 diameters (test_body_entries.cpp), in about a second
-/// for 10⁴ spheres.
+/// the share of trials that succeed falls towards 0, so some bound is needed; a trial is a look
+/// into 3^Dim hash buckets, so 10⁴ per body stop a jammed insertion of 10⁴ bodies within
+/// seconds. (Not measured: how close to the jamming fraction this bound gets in large regions.)
 constexpr long trials_per_body = 10000;
 
 enum class EntryKind { single, file, random };
