@@ -95,7 +95,7 @@ def _body_histories(run):
 
 def _free(run, histories):
     return {b: h for b, h in histories.items()
-            if run.bodies[b].get("motion", "free") != "fixed"}
+            if run.body(b).get("motion", "free") != "fixed"}
 
 
 # --- the overview ---------------------------------------------------------------------------
@@ -499,7 +499,7 @@ def forces_panel(ax, run, histories=None):
     case_dir = references.case_directory(run.path)
     for body, h in histories.items():
         if speed is not None:
-            diameter = float(run.bodies[body]["diameter"])
+            diameter = float(run.body(body)["diameter"])
             area = diameter if run.dimension == 2 else np.pi * diameter**2 / 4
             scale = 0.5 * density * speed**2 * area
             ax.plot(h["time"], h["fx"] / scale, color=colours[body], label=f"C_D, body {body}")

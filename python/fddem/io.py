@@ -109,6 +109,22 @@ def read_case(run_dir):
         return tomllib.load(f)
 
 
+def read_body_file(path):
+    """The rows of a body file ([[bodies]] file, io/body_file.hpp) as dicts: "id" (int),
+    "position" (list), "diameter", "density" and, if the file has u, v (w), "velocity"."""
+    with open(path, newline="") as f:
+        lines = [line for line in f if line.strip() and not line.lstrip().startswith("#")]
+    rows = []
+    for row in csv.DictReader(lines, skipinitialspace=True):
+        axes = [a for a in "xyz" if a in row]
+        body = {"id": int(row["id"]), "position": [float(row[a]) for a in axes],
+                "diameter": float(row["diameter"]), "density": float(row["density"])}
+        if "u" in row:
+            body["velocity"] = [float(row[c]) for c in "uvw"[:len(axes)]]
+        rows.append(body)
+    return rows
+
+
 def read_case_title(run_dir):
     """The case's [case] title, or the directory's name when it has none."""
     title = read_case(run_dir).get("case", {}).get("title", "")

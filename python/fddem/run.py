@@ -9,6 +9,44 @@ from . import io
 from .units import case_units
 
 
+def expand_bodies(case, dimension):
+    """One dict per body, in the order of the case, with its "id": as fddem numbers them
+    (io/body_entries.hpp). An entry with `file` gives one body per row of the file (the case
+    as run names it by its absolute path), with that row's id, position, diameter and
+    density; a random insertion gives `count` bodies (or its volume fraction's worth) of its
+    diameter without positions; every other entry one body. Entries without a file number
+    their bodies on from the largest id before them."""
+    bodies = []
+    next_id = 0
+    for entry in case.get("bodies", []):
+        if "file" in entry:
+            for row in io.read_body_file(entry["file"]):
+                body = {k: v for k, v in entry.items() if k != "file"}
+                body.update(row)
+                bodies.append(body)
+                next_id = max(next_id, row["id"] + 1)
+            continue
+        count = 1
+        if "count" in entry or "volume_fraction" in entry:
+            count = entry.get("count") or _random_count(case, entry, dimension)
+        for _ in range(count):
+            bodies.append(dict(entry, id=next_id))
+            next_id += 1
+    return bodies
+
+
+def _random_count(case, entry, dimension):
+    """The bodies of a random insertion by volume fraction: the fraction of the region, in
+    whole bodies (io/body_entries.cpp's rounding)."""
+    origin = case["domain"].get("origin", [0.0] * dimension)
+    low = entry.get("region_low", origin)
+    high = entry.get("region_high", [o + s for o, s in zip(origin, case["domain"]["size"])])
+    region = math.prod(h - lo for lo, h in zip(low, high))
+    r = 0.5 * float(entry["diameter"])
+    body = math.pi * r * r if dimension == 2 else 4.0 / 3.0 * math.pi * r**3
+    return max(1, int(math.floor(entry["volume_fraction"] * region / body + 0.5)))
+
+
 class Run:
     """An fddem run directory.
 
@@ -26,7 +64,8 @@ class Run:
         self.dimension = len(self.case["domain"]["size"])
         self.origin = np.array(self.case["domain"].get("origin", [0.0] * self.dimension), float)
         self.size = np.array(self.case["domain"]["size"], float)
-        self.bodies = self.case.get("bodies", [])
+        self.bodies = expand_bodies(self.case, self.dimension)
+        self._body_by_id = {b["id"]: b for b in self.bodies}
         self.units = case_units(self.case)
         self._frames = io.read_pvd(path)
         self._body_frames = io.read_pvd(path, "particles.pvd")
@@ -91,11 +130,15 @@ class Run:
     def has_contacts(self):
         return self.has_bodies and self.case.get("contact", {}).get("model", "linear") != "none"
 
+    def body(self, body_id):
+        """The keys of the body of `body_id`: its [[bodies]] entry's, and its file row's."""
+        return self._body_by_id[body_id]
+
     def body_radius(self, body_id):
-        return 0.5 * float(self.bodies[body_id]["diameter"])
+        return 0.5 * float(self.body(body_id)["diameter"])
 
     def body_density(self, body_id):
-        body = self.bodies[body_id]
+        body = self.body(body_id)
         if "density" in body:
             return float(body["density"])
         return float(self.case.get("derived", {})["body_density"])

@@ -10,6 +10,7 @@ that the run directory has its ParaView script, and that a directory that is not
 with exit status 2 and one line.
 """
 
+import csv
 import math
 import os
 import shutil
@@ -23,11 +24,23 @@ MIN_PIXEL_VARIANCE = 1e-3
 STEPS = 3
 
 
-def coarse_overrides(case):
+def body_diameters(case, case_file):
+    """Every body's diameter: an entry's own, or each row's of its bodies.file (a CSV)."""
+    for body in case.get("bodies", []):
+        if "file" in body:
+            path = os.path.join(os.path.dirname(case_file), body["file"])
+            with open(path, newline="") as f:
+                lines = [line for line in f if line.strip() and not line.lstrip().startswith("#")]
+            yield from (float(row["diameter"]) for row in csv.DictReader(lines, skipinitialspace=True))
+        else:
+            yield body["diameter"]
+
+
+def coarse_overrides(case, case_file):
     size = case["domain"]["size"]
     h = min(size) / 16
-    for body in case.get("bodies", []):
-        h = min(h, body["diameter"] / 4)
+    for diameter in body_diameters(case, case_file):
+        h = min(h, diameter / 4)
     cells = [max(4, math.ceil(s / h)) for s in size]
     dt = case["time"]["dt"]
     return [f"domain.cells=[{','.join(map(str, cells))}]", f"time.max_steps={STEPS}",
@@ -62,7 +75,7 @@ def main():
         case = tomllib.load(f)
     run_dir = os.path.join(work, "run")
     command = [fddem, "run", case_file, "-o", run_dir, "-q"]
-    for override in coarse_overrides(case):
+    for override in coarse_overrides(case, case_file):
         command += ["--set", override]
     result = subprocess.run(command, capture_output=True, text=True)
     if result.returncode != 0:

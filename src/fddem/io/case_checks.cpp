@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/io/case_checks.hpp"
 
+#include "fddem/core/errors.hpp"
+#include "fddem/io/body_file.hpp"
 #include "fddem/io/case_document.hpp"
 #include "fddem/io/case_names.hpp"
 #include "fddem/io/case_schema.hpp"
@@ -10,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <numeric>
 #include <set>
 
 namespace fddem {
@@ -169,6 +172,69 @@ void check_lines(const CaseDocument& doc, const CaseConfig& c)
     }
 }
 
+/// "body 2" (its [[bodies]] entry) or, for a body of a file or a random insertion, "body id 7".
+std::string body_name(const CaseDocument& doc, const BodyConfig& b)
+{
+    const bool is_one_of_many = !doc.entry("bodies", b.entry).contains("position");
+    return is_one_of_many ? fmt::format("body id {}", b.id) : fmt::format("body {}", b.entry + 1);
+}
+
+/// Stops at a body: at the line of its row and the column `column` of its file, else at the
+/// key `name` of its [[bodies]] entry (or at the entry, for a key it does not give).
+[[noreturn]] void fail_body(const CaseDocument& doc, const BodyConfig& b, const std::string& name,
+                            const std::string& column, const std::string& message)
+{
+    if (b.file_line > 0) {
+        throw InputError(b.file, b.file_line, column, message);
+    }
+    const toml::table& t = doc.entry("bodies", b.entry);
+    const toml::node* n = t.get(name);
+    doc.fail("bodies." + name, n != nullptr ? n : &(*doc.table_array("bodies"))[b.entry], message);
+}
+
+/// No two bodies overlap: sweep along x, in order of the left ends, comparing each body with
+/// those whose left ends lie within its reach (O(N log N) for a bed of equal bodies, not N²).
+/// The later body of a pair (in the case's order) is the one named first.
+void check_apart(const CaseDocument& doc, const std::vector<BodyConfig>& bodies,
+                 std::size_t dimension)
+{
+    std::vector<std::size_t> order(bodies.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    const auto left = [&](std::size_t k) {
+        return bodies[k].position[0] - 0.5 * bodies[k].diameter;
+    };
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return left(a) < left(b) || (left(a) == left(b) && a < b);
+    });
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const BodyConfig& a = bodies[order[i]];
+        const double right = a.position[0] + 0.5 * a.diameter;
+        for (std::size_t j = i + 1; j < order.size() && left(order[j]) < right; ++j) {
+            const BodyConfig& b = bodies[order[j]];
+            double distance2 = 0.0;
+            for (std::size_t d = 0; d < dimension; ++d) {
+                distance2 += std::pow(b.position[d] - a.position[d], 2);
+            }
+            if (std::sqrt(distance2) < 0.5 * (a.diameter + b.diameter)) {
+                const bool is_b_later = order[j] > order[i];
+                const BodyConfig& later = is_b_later ? b : a;
+                const BodyConfig& earlier = is_b_later ? a : b;
+                std::string columns = "x, y";
+                if (dimension == 3) {
+                    columns += ", z";
+                }
+                fail_body(doc, later, "position", columns,
+                          fmt::format(
+                              "{} overlaps {}{}", body_name(doc, later), body_name(doc, earlier),
+                              earlier.file_line > 0 && earlier.file != later.file
+                                  ? fmt::format(" ({}:{})", earlier.file, earlier.file_line)
+                              : earlier.file_line > 0 ? fmt::format(" (line {})", earlier.file_line)
+                                                      : ""));
+            }
+        }
+    }
+}
+
 } // namespace
 
 void check_case(const CaseDocument& doc, const CaseConfig& c)
@@ -187,19 +253,17 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
     for (std::size_t d = 1; d < dimension; ++d) {
         h = std::max(h, box.size[d] / box.cells[d]);
     }
-    for (std::size_t k = 0; k < c.bodies.size(); ++k) {
-        const BodyConfig& b = c.bodies[k];
-        const toml::table& t = doc.entry("bodies", k);
+    for (const BodyConfig& b : c.bodies) {
         if ((b.shape == BodyShape::disk) != (dimension == 2)) {
-            doc.fail("bodies.shape", t.get("shape"),
-                     "a " + name_of(b.shape) + " does not fit a " + std::to_string(dimension) +
-                         "D case (disk: 2D, sphere: 3D)");
+            fail_body(doc, b, "shape", "shape",
+                      "a " + name_of(b.shape) + " does not fit a " + std::to_string(dimension) +
+                          "D case (disk: 2D, sphere: 3D)");
         }
         if (b.diameter < 4.0 * h) {
-            doc.fail("bodies.diameter", t.get("diameter"),
-                     fmt::format("the body is {:.2g} cells across; at least 4 are needed "
-                                 "for the marker layout (refine domain.cells)",
-                                 b.diameter / h));
+            fail_body(doc, b, "diameter", "diameter",
+                      fmt::format("{} is {:.2g} cells across; at least 4 are needed for the "
+                                  "marker layout (refine domain.cells)",
+                                  body_name(doc, b), b.diameter / h));
         }
         const double r = 0.5 * b.diameter;
         for (std::size_t d = 0; d < dimension; ++d) {
@@ -209,24 +273,14 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
             const double lo = box.origin[d];
             const double hi = box.origin[d] + box.size[d];
             if (b.position[d] - r < lo || b.position[d] + r > hi) {
-                doc.fail("bodies.position", t.get("position"),
-                         fmt::format("body {} reaches outside the box on axis {} (centre "
-                                     "{:g}, radius {:g}, box [{:g}, {:g}])",
-                                     k + 1, d, b.position[d], r, lo, hi));
-            }
-        }
-        for (std::size_t j = 0; j < k; ++j) {
-            const BodyConfig& o = c.bodies[j];
-            double distance2 = 0.0;
-            for (std::size_t d = 0; d < dimension; ++d) {
-                distance2 += std::pow(b.position[d] - o.position[d], 2);
-            }
-            if (std::sqrt(distance2) < 0.5 * (b.diameter + o.diameter)) {
-                doc.fail("bodies.position", t.get("position"),
-                         fmt::format("body {} overlaps body {}", k + 1, j + 1));
+                fail_body(doc, b, "position", position_column(d),
+                          fmt::format("{} reaches outside the box on axis {} (centre "
+                                      "{:g}, radius {:g}, box [{:g}, {:g}])",
+                                      body_name(doc, b), d, b.position[d], r, lo, hi));
             }
         }
     }
+    check_apart(doc, c.bodies, dimension);
 }
 
 } // namespace fddem

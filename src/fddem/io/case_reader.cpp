@@ -2,6 +2,7 @@
 #include "fddem/io/case_reader.hpp"
 
 #include "fddem/core/errors.hpp"
+#include "fddem/io/body_entries.hpp"
 #include "fddem/io/case_checks.hpp"
 #include "fddem/io/case_document.hpp"
 #include "fddem/io/case_keys.hpp"
@@ -47,6 +48,7 @@ CaseConfig read_case_string(std::string_view text, const std::string& source_nam
     {
         const FloatingPointHold hold;
         check_limits(doc, c);
+        make_bodies(doc, c);
     }
     check_case(doc, c);
     drop_absent_sides(doc, c);
@@ -56,6 +58,7 @@ CaseConfig read_case_string(std::string_view text, const std::string& source_nam
         check_bodies(doc, c);
         derive_contact(doc, c);
     }
+    record_body_files(doc, c);
     c.as_run = doc.as_run();
     return c;
 }

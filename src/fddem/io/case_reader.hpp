@@ -4,8 +4,9 @@
 /// Every problem — syntax, unknown or misspelt key, wrong type, out of range, missing,
 /// contradictory — throws InputError naming the file, the line and the key, before any work.
 /// The steps, one file each: the TOML document and --set (io/case_document.cpp), each key
-/// against the schema (io/case_keys.cpp), the keys together (io/case_checks.cpp), and the
-/// values fddem derives (io/nondimensional_derivation.cpp, io/contact_derivation.cpp).
+/// against the schema (io/case_keys.cpp), the bodies of the [[bodies]] entries
+/// (io/body_entries.cpp), the keys together (io/case_checks.cpp), and the values fddem derives
+/// (io/nondimensional_derivation.cpp, io/contact_derivation.cpp).
 
 #include "fddem/io/did_you_mean.hpp"
 #include "fddem/simulation/case_config.hpp"

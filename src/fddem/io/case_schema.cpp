@@ -98,6 +98,57 @@ void add_material_keys(std::vector<KeySpec>& s, const std::string& section,
                          &SurfaceKeys::restitution));
 }
 
+/// The keys of a [[bodies]] entry that gives many bodies (io/body_entries.hpp): from a file,
+/// or inserted at random. Its other keys (shape, motion, n_rings, surface) are every body's.
+void add_body_group_keys(std::vector<KeySpec>& s)
+{
+    using T = KeyType;
+    const auto group = [](KeySpec spec, auto member) {
+        return bound_in(
+            [](CaseConfig& config, std::size_t entry) -> BodyGroupConfig& {
+                return entry_of(config.body_groups, entry);
+            },
+            std::move(spec), member);
+    };
+    s.push_back(group(
+        key("bodies", "file", T::string, "", "none",
+            "A CSV file of bodies, relative to the case file: a header naming the columns id, x, "
+            "y, (z,) diameter, density and optionally u, v, (w), then one body per row (ids: "
+            "whole numbers ≥ 0, unique in the case). The entry's other keys apply to every row; "
+            "velocity, unless the file has u, v, (w). Entries without a file number their "
+            "bodies on from the largest id before them."),
+        &BodyGroupConfig::file));
+    s.push_back(group(ranged(key("bodies", "count", T::integer, "", "none",
+                                 "Random insertion: this many bodies of the entry's diameter at "
+                                 "random places in the region, none closer than bodies.gap to "
+                                 "another body or to the region's faces."),
+                             1, 10000000, false, false),
+                      &BodyGroupConfig::count));
+    s.push_back(group(ranged(key("bodies", "volume_fraction", T::real, "", "none",
+                                 "Random insertion: as many bodies as fill this fraction of the "
+                                 "region (within half a body); random sequential addition jams "
+                                 "near 0.547 (2D) and 0.384 (3D)."),
+                             0.0, 1.0, true, true),
+                      &BodyGroupConfig::volume_fraction));
+    s.push_back(group(key("bodies", "region_low", T::real_vector, "m", "none",
+                          "Random insertion: the region's lower corner; default the box's."),
+                      &BodyGroupConfig::region_low));
+    s.push_back(group(key("bodies", "region_high", T::real_vector, "m", "none",
+                          "Random insertion: the region's upper corner; default the box's."),
+                      &BodyGroupConfig::region_high));
+    s.push_back(group(ranged(key("bodies", "seed", T::integer, "", "none",
+                                 "Random insertion: seed of the random numbers (std::mt19937_64; "
+                                 "the same seed places the same bodies on every machine); "
+                                 "default 0."),
+                             0, inf, false, false),
+                      &BodyGroupConfig::seed));
+    s.push_back(group(ranged(key("bodies", "gap", T::real, "m", "none",
+                                 "Random insertion: the least clearance between inserted bodies, "
+                                 "and from the region's faces; default 0."),
+                             0.0, inf, false, false),
+                      &BodyGroupConfig::gap));
+}
+
 } // namespace
 
 std::vector<KeySpec> case_schema()
@@ -307,16 +358,18 @@ std::vector<KeySpec> case_schema()
     s.push_back(body_key(key("bodies", "shape", T::string, none, "\"disk\"",
                              "Body shape: disk (2D) or sphere (3D)."),
                          &BodyConfig::shape));
-    s.push_back(
-        body_key(positive(key("bodies", "diameter", T::real, "m", std::nullopt, "Diameter D.")),
-                 &BodyConfig::diameter));
+    s.push_back(body_key(positive(key("bodies", "diameter", T::real, "m", "none",
+                                      "Diameter D; required, except with bodies.file (whose "
+                                      "diameter column gives it).")),
+                         &BodyConfig::diameter));
     s.push_back(
         body_key(positive(key("bodies", "density", T::real, "kg/m³", "none",
                               "Body density ρs; required unless nondimensional.density_ratio "
                               "gives it.")),
                  &BodyConfig::density));
-    s.push_back(body_key(key("bodies", "position", T::real_vector, "m", std::nullopt,
-                             "Initial centre (inside the box, clear of walls and other bodies)."),
+    s.push_back(body_key(key("bodies", "position", T::real_vector, "m", "none",
+                             "Initial centre (inside the box, clear of walls and other bodies); "
+                             "required, except with bodies.file or random insertion."),
                          &BodyConfig::position));
     s.push_back(body_key(key("bodies", "velocity", T::real_vector, "m/s", "zeros",
                              "Initial velocity; for motion = \"prescribed\" the velocity kept."),
@@ -339,6 +392,7 @@ std::vector<KeySpec> case_schema()
                       [](CaseConfig& config, std::size_t entry) -> SurfaceKeys& {
                           return entry_of(config.bodies, entry).surface;
                       });
+    add_body_group_keys(s);
 
     s.push_back(bound(key("coupling", "kernel", T::string, none, "\"hat\"",
                           "Discrete delta function: hat (the paper's linear d_h), roma3 (Roma, "
@@ -587,7 +641,18 @@ std::vector<KeySpec> case_schema()
 std::vector<TableArraySpec> case_table_arrays()
 {
     return {{"output.lines", "Line samples of u, v (w) and p at the end of the run."},
-            {"bodies", "Rigid particles."}};
+            {"bodies",
+             "Rigid particles. An entry gives one body (at `position`), one per row of a CSV "
+             "file (`file`), or many inserted at random (`count` or `volume_fraction`, in "
+             "`region_low`–`region_high`, with `seed` and `gap`). The entry's other keys "
+             "(shape, motion, n_rings, the surface keys, and velocity unless the file has u, "
+             "v, w columns) apply to every body it gives: one entry per kind of body, so that "
+             "each key is declared once and a case can mix a bed from a file with bodies given "
+             "one by one. Ids: a file gives its own (whole numbers ≥ 0, unique in the case); "
+             "every other entry numbers its bodies on from the largest id of the entries "
+             "before it, from 0. Random bodies keep clear of the bodies of every other entry; "
+             "the same seed gives the same bodies on every machine. The case as run records a "
+             "file by its absolute path, so that `fddem run --restart` finds it."}};
 }
 
 std::string type_name(KeyType type)
@@ -655,16 +720,20 @@ std::string describe_keys(bool markdown)
         if (spec.section != section) {
             section = spec.section;
             bool is_array = false;
+            std::string array_doc;
             for (const auto& t : case_table_arrays()) {
-                is_array = is_array || t.name == section;
+                if (t.name == section) {
+                    is_array = true;
+                    array_doc = t.doc;
+                }
             }
             const std::string header = is_array ? "[[" + section + "]]" : "[" + section + "]";
             if (markdown) {
-                out += "\n## `" + header +
-                       "`\n\n| key | type | unit | default | range | "
+                out += "\n## `" + header + "`\n\n" + (is_array ? array_doc + "\n\n" : "") +
+                       "| key | type | unit | default | range | "
                        "meaning |\n| --- | --- | --- | --- | --- | --- |\n";
             } else {
-                out += "\n" + header + "\n";
+                out += "\n" + header + "\n" + (is_array ? "  " + array_doc + "\n" : "");
             }
         }
         const std::string value = spec.value ? *spec.value : "required";

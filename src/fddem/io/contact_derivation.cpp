@@ -86,9 +86,9 @@ void check_young_moduli(const CaseDocument& doc, const CaseConfig& c, bool has_w
     const std::string message = "hertz_mindlin needs a Young's modulus: give "
                                 "contact.young_modulus (or young_modulus in every [[bodies]]"
                                 " and in [walls])";
-    for (std::size_t k = 0; k < c.bodies.size(); ++k) {
-        if (!(c.bodies[k].material.young_modulus > 0.0)) {
-            doc.fail("contact.young_modulus", &(*doc.table_array("bodies"))[k], message);
+    for (const BodyConfig& b : c.bodies) {
+        if (!(b.material.young_modulus > 0.0)) {
+            doc.fail("contact.young_modulus", &(*doc.table_array("bodies"))[b.entry], message);
         }
     }
     if (has_walls && !(c.walls.material.young_modulus > 0.0)) {
@@ -175,8 +175,8 @@ void check_model_keys(const CaseDocument& doc, const CaseConfig& c,
                 }
                 continue;
             }
-            for (std::size_t k = 0; k < c.bodies.size(); ++k) {
-                if (const toml::node* n = doc.entry("bodies", k).get(name)) {
+            for (const BodyConfig& b : c.bodies) {
+                if (const toml::node* n = doc.entry("bodies", b.entry).get(name)) {
                     doc.fail(key, n, message);
                 }
             }

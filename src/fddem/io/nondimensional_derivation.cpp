@@ -85,14 +85,22 @@ void check_given_once(const CaseDocument& doc, const CaseConfig& c)
         doc.fail("nondimensional.density_ratio", doc.node("nondimensional", "density_ratio"),
                  "nondimensional.density_ratio needs nondimensional.reynolds (eq. 22 uses both)");
     }
-    for (std::size_t k = 0; k < c.bodies.size(); ++k) {
-        const toml::table& t = doc.entry("bodies", k);
+    for (const BodyConfig& b : c.bodies) {
+        const toml::table& t = doc.entry("bodies", b.entry);
+        if (b.file_line > 0) {
+            if (given.density_ratio) {
+                doc.fail("bodies.file", t.get("file"),
+                         "a file gives its bodies' densities: nondimensional.density_ratio "
+                         "would replace them");
+            }
+            continue;
+        }
         if (given.density_ratio && t.contains("density")) {
             doc.fail("bodies.density", t.get("density"),
                      "give either bodies.density or nondimensional.density_ratio, not both");
         }
         if (!given.density_ratio && !t.contains("density")) {
-            doc.fail("bodies.density", &(*doc.table_array("bodies"))[k],
+            doc.fail("bodies.density", &(*doc.table_array("bodies"))[b.entry],
                      "missing required key 'density' in [[bodies]] (or give "
                      "nondimensional.density_ratio)");
         }

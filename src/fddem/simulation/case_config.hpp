@@ -101,8 +101,9 @@ struct SimpleConfig {
     int linear_max_iterations = 200;
 };
 
-/// One [[bodies]] entry.
+/// One body, as a [[bodies]] entry gives it (io/body_entries.hpp: one entry may give many).
 struct BodyConfig {
+    int id = 0; ///< stable for the run (io/body_entries.hpp says how ids are given)
     BodyShape shape = BodyShape::disk;
     double diameter = 1.0;        ///< [m]
     double density = 1.0;         ///< ρs [kg/m³] (given, or derived from [nondimensional])
@@ -113,6 +114,23 @@ struct BodyConfig {
     int n_rings = 0; ///< N_a; 0: from coupling.marker_spacing_ratio
     SurfaceKeys surface;
     Material material; ///< its surface: `surface`, else [contact]'s (derived)
+    /// Where it is given, for messages: its [[bodies]] entry (from 0) and, for a body of a
+    /// file, the file and the line of its row (0: not from a file).
+    std::size_t entry = 0;
+    std::string file;
+    int file_line = 0;
+};
+
+/// How a [[bodies]] entry gives its bodies (io/body_entries.hpp): one at its `position`; one
+/// per row of `file`; or `count` (or `volume_fraction`'s worth) inserted at random.
+struct BodyGroupConfig {
+    std::string file;                      ///< CSV of bodies, relative to the case file
+    long count = 0;                        ///< random insertion: this many bodies (0: not given)
+    std::optional<double> volume_fraction; ///< random insertion: this fraction of the region
+    std::vector<double> region_low;        ///< [m]; empty: the box's lower corner
+    std::vector<double> region_high;       ///< [m]; empty: the box's upper corner
+    long seed = 0;                         ///< of the random numbers
+    double gap = 0.0;                      ///< least clearance between bodies and walls [m]
 };
 
 /// How the marker rings fill a body (coupling.markers).
@@ -218,6 +236,7 @@ struct CaseConfig {
     TimeConfig time;
     SimpleConfig simple;
     std::vector<BodyConfig> bodies;
+    std::vector<BodyGroupConfig> body_groups; ///< one per [[bodies]] entry
     CouplingConfig coupling;
     ContactConfig contact;
     LubricationConfig lubrication;

@@ -111,7 +111,7 @@ Particles<Dim> make_particles(const CaseConfig& config, const MacGrid<Dim>& grid
     for (std::size_t k = 0; k < config.bodies.size(); ++k) {
         const BodyConfig& b = config.bodies[k];
         Particle<Dim> body;
-        body.id = static_cast<int>(k);
+        body.id = b.id;
         body.shape = Ball<Dim>{b.diameter};
         body.density = b.density;
         body.material = b.material;
