@@ -539,12 +539,13 @@ std::vector<KeySpec> case_schema()
                            "Re = ρf U_c D / μ (D: the first body's diameter); fddem derives "
                            "fluid.viscosity.")),
               &CaseConfig::nondimensional, &NondimensionalConfig::reynolds));
-    s.push_back(
-        bound(ranged(key("nondimensional", "density_ratio", T::real, none, "none",
-                         "ρr = ρs / ρf; with reynolds, fddem derives every body's density and "
-                         "the gravity of eqs. (21)–(22) (Happel & Brenner wall factor K)."),
-                     0.0, inf, true, false),
-              &CaseConfig::nondimensional, &NondimensionalConfig::density_ratio));
+    s.push_back(bound(
+        ranged(key("nondimensional", "density_ratio", T::real, none, "none",
+                   "ρr = ρs / ρf; with reynolds, fddem derives every body's density and "
+                   "the gravity of eqs. (21)–(22) (Happel & Brenner wall factor K; 2D only: a 3D "
+                   "case gives fluid.gravity and bodies.density)."),
+               0.0, inf, true, false),
+        &CaseConfig::nondimensional, &NondimensionalConfig::density_ratio));
     s.push_back(bound(positive(key("nondimensional", "velocity", T::real, "m/s", "1.0",
                                    "Characteristic velocity U_c of eq. (21).")),
                       &CaseConfig::nondimensional, &NondimensionalConfig::velocity));

@@ -33,6 +33,15 @@ void derive_viscosity(CaseDocument& /*doc*/, CaseConfig& c)
 void derive_settling(CaseDocument& doc, CaseConfig& c)
 {
     const NondimensionalConfig& given = c.nondimensional;
+    if (c.domain.dimension == 3) {
+        // Eqs. (20)–(22) are the paper's 2D settling scales: a cylinder's wall factor in a
+        // channel of width x and gravity along −y. A sphere's would need its own drag law and
+        // wall correction; rather than a silently wrong g, a 3D case gives them itself.
+        doc.fail("nondimensional.density_ratio", doc.node("nondimensional", "density_ratio"),
+                 "the settling scales of eqs. (20)–(22) are those of a disk in a 2D channel; in "
+                 "3D give fluid.gravity and bodies.density instead (nondimensional.reynolds "
+                 "alone, which sets the viscosity, is fine)");
+    }
     if (std::abs(*given.density_ratio - 1.0) < 1e-12) {
         doc.fail("nondimensional.density_ratio", doc.node("nondimensional", "density_ratio"),
                  "a density ratio of 1 gives no settling velocity scale (eq. 21); give "

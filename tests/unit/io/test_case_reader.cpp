@@ -119,6 +119,43 @@ end = 1.0
     EXPECT_EQ(c.walls.velocity.size(), 3U);
 }
 
+TEST(CaseReader, ThreeDimensionalCaseRefusesThe2DSettlingScalesButTakesAReynoldsNumber)
+{
+    const std::string text = R"([domain]
+size = [1.0, 1.0, 1.0]
+cells = [32, 32, 32]
+[fluid]
+density = 1000.0
+[nondimensional]
+reynolds = 40.0
+velocity = 0.5
+[time]
+dt = 0.1
+end = 1.0
+[[bodies]]
+shape = "sphere"
+diameter = 0.25
+density = 1500.0
+position = [0.5, 0.5, 0.5]
+)";
+    // μ = ρ U D / Re holds in any dimension.
+    EXPECT_DOUBLE_EQ(read_case_string(text, "3d.toml").fluid.viscosity, 1000.0 * 0.5 * 0.25 / 40);
+    std::string settling = text;
+    settling.replace(settling.find("density = 1500.0\n"), 17, "");
+    settling.replace(settling.find("velocity = 0.5\n"), 15,
+                     "velocity = 0.5\ndensity_ratio = 1.5\n");
+    try {
+        (void)read_case_string(settling, "3d.toml");
+        FAIL() << "a 3D case took the 2D settling scales";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.key(), "nondimensional.density_ratio") << e.formatted();
+        EXPECT_EQ(e.line(), 9) << e.formatted();
+        EXPECT_NE(std::string(e.what()).find("in 3D give fluid.gravity and bodies.density"),
+                  std::string::npos)
+            << e.formatted();
+    }
+}
+
 TEST(CaseReader, AngularVelocityIsANumberIn2DAndAVectorIn3D)
 {
     const std::string sphere = R"([domain]
