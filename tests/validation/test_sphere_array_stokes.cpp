@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// The 3D coupling against an exact solution: Stokes flow through a simple cubic array of fixed
+// spheres, driven by a uniform force on the fluid.
+#include "fddem/grid/loops.hpp"
+#include "fddem/io/case_reader.hpp"
+#include "fddem/simulation/simulation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+#include "support/run_to_end.hpp"
+
+namespace fddem {
+namespace {
+
+/// The drag factor K = F / (6π μ a U) of a simple cubic array of spheres at volume fraction
+/// φ, U the mean velocity over the cell: Sangani & Acrivos (1982, Int. J. Multiphase Flow 8,
+/// 343), after Hasimoto (1959); their series to φ^{10/3}, accurate to 0.1 % at φ < 0.03.
+double sangani_acrivos_k(double phi)
+{
+    const double c = std::cbrt(phi);
+    return 1.0 / (1.0 - 1.7601 * c + phi - 1.5593 * phi * phi + 3.9799 * std::pow(c, 8) -
+                  3.0734 * std::pow(c, 10));
+}
+
+TEST(SphereArrayStokes, MeanVelocityForTheForceIsSanganiAcrivosWithTheRetractedMarkers)
+{
+    // d = 1 in a periodic cube of side 4 (φ = 0.0082), d/h = 8, μ = ρ = 1, f = 0.01: Re = 0.04.
+    // Implicit Euler with Δt = 0.5 to t = 30 (the flow settles in a few time units; the
+    // unconverged marker constraint makes it creep on for about 20, docs/method.md §4).
+    const CaseConfig config = read_case_string(R"([domain]
+size = [4.0, 4.0, 4.0]
+cells = [32, 32, 32]
+periodic = [true, true, true]
+[fluid]
+density = 1.0
+viscosity = 1.0
+body_force = [0.01, 0.0, 0.0]
+[[bodies]]
+shape = "sphere"
+diameter = 1.0
+density = 1.0
+position = [2.0, 2.0, 2.0]
+motion = "fixed"
+[coupling]
+markers = "retracted"
+[time]
+dt = 0.5
+end = 30.0
+)",
+                                               "sphere_array.toml");
+    Simulation<3> sim(config);
+    test::run_to_end(sim);
+    const MacGrid<3>& grid = sim.grid();
+    const double cells = static_cast<double>(grid.owned_faces(0).size());
+    const double mean_u = sum_over(grid.communicator(), grid.owned_faces(0),
+                                   [&](const Index<3>& f) { return sim.fluid().u[0](f); }) /
+                          cells;
+    const double pi = std::numbers::pi;
+    const double phi = pi / 6.0 / 64.0;
+    const double force = 0.01 * 64.0; // the whole cube's drive, held by the sphere
+    const double exact = force / (6.0 * pi * 0.5 * sangani_acrivos_k(phi));
+    std::printf("mean u / exact = %.4f (Sangani & Acrivos 1982, K = %.4f); sphere force / drive "
+                "= %.6f\n",
+                mean_u / exact, sangani_acrivos_k(phi), sim.bodies().front().force[0] / force);
+    // Measured 1.013. 3 % is the first-order interface error at d/h = 8 (the 2D towed cylinder
+    // at D/16 is 1.2 % off); the paper's layout gives 1.25 here (not asserted: docs/method.md).
+    EXPECT_NEAR(mean_u / exact, 1.0, 0.03);
+    // The force balance: at steady state the sphere holds the drive of the whole cube.
+    EXPECT_NEAR(sim.bodies().front().force[0] / force, 1.0, 2e-3);
+}
+
+} // namespace
+} // namespace fddem
