@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 
 import fddem  # noqa: E402
-from fddem import io, slices  # noqa: E402
+from fddem import io, slices, ten_cate  # noqa: E402
 from synthetic_run import make_run, velocity_field  # noqa: E402
 
 # A figure with a picture in it: pixel values vary. A blank (one-colour) PNG has variance 0;
@@ -269,3 +269,35 @@ class ParaViewScript(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+@unittest.skipUnless(ten_cate.reference_directory(), "the digitised ten Cate curves are not here")
+class TenCate(unittest.TestCase):
+    """tools/compare_ten_cate.py's measures on a run that follows the digitised E4 curve."""
+
+    def write_run(self, directory, scale):
+        _, ref_w = ten_cate.load_curves(ten_cate.reference_directory(), "E4")
+        t = np.linspace(0.0, 1.1, 551)
+        w = scale * np.interp(t, ref_w[:, 0], ref_w[:, 1], left=0.0)
+        z = 0.1275 + np.concatenate([[0.0], np.cumsum(0.5 * (w[1:] + w[:-1]) * np.diff(t))])
+        with open(os.path.join(directory, "particles.csv"), "w") as f:
+            f.write("time,id,x,y,z,u,v,w\n")
+            for row in zip(t, z, w):
+                f.write("{},0,0.05,0.05,{},0,0,{}\n".format(*row))
+
+    def test_the_curve_itself_matches_and_a_faster_sphere_does_not(self):
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_run(directory, 1.0)
+            same = ten_cate.compare(directory, ten_cate.reference_directory(), "E4")
+            self.write_run(directory, 1.1)
+            fast = ten_cate.compare(directory, ten_cate.reference_directory(), "E4")
+        # The digitised curve peaks at 0.1233 m/s, 0.9 % above Table 2's u_max.
+        self.assertAlmostEqual(same["u_max_error"], 0.1233 / 0.12224 - 1.0, delta=2e-3)
+        # The curve against itself: 1 % from points digitised twice at one time (0.135 s: w
+        # 0.0623 and 0.0652), and 0.07 d between the digitised gap and the integral of the
+        # digitised w (the digitisation's own inconsistency); 10 % faster is far outside both.
+        self.assertLess(same["w_rms"], 0.015)
+        self.assertLess(same["travel_rms"], 0.1)
+        self.assertGreater(fast["u_max_error"], 0.10)
+        self.assertGreater(fast["w_rms"], 0.05)
+        self.assertGreater(fast["travel_rms"], 0.3)
