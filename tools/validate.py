@@ -273,6 +273,7 @@ def all_checks():
     if SHARED_UHLMANN is not None:
         checks.append(uhlmann_check("DKT at Re ≈ 450 vs Uhlmann (2005)"))
     if SHARED_TEN_CATE is not None:
+        checks.append(ten_cate_check("sphere settling in a box, ten Cate et al. (2002) E2 (d/h = 8.25)", "E2"))
         checks.append(ten_cate_check("sphere settling in a box, ten Cate et al. (2002) E4 (d/h = 8.25)", "E4"))
     return checks
 
