@@ -17,9 +17,13 @@
 #     then one iteratively tight reference run per code, against which each row's iteration
 #     error is measured. Prints steps, outer iterations, wall seconds, max |u - Ghia|,
 #     max |v - Ghia| and the ratios.
+#  6. with --3d: the 3D sphere cases (issue 14): ten Cate E4 (d/h = 8.25) to t = 0.2 s, or end
+#     to end with --3d full, and the fixed sphere at Re 20 for 20 steps: time per step, outer
+#     iterations per step, ns per cell and outer iteration, the share of each phase, peak memory
+#     per cell.
 # The kernel table includes contact detection (cell list vs brute force) for 1e3-1e5 disks.
 # Options: --openfoam [N] (default N = 256), --paper, --steady [R] (default R = 3 rounds),
-# --quick (smaller table), --threads T (default 1).
+# --3d [full], --quick (smaller table), --threads T (default 1).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -27,6 +31,8 @@ cd "$root"
 openfoam=0
 openfoam_n=256
 paper=0
+three_d=0
+three_d_full=0
 steady=0
 steady_rounds=3
 quick=0
@@ -36,6 +42,7 @@ while [ $# -gt 0 ]; do
         --openfoam) openfoam=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then openfoam_n="$2"; shift; fi ;;
         --quick) quick=1 ;;
         --paper) paper=1 ;;
+        --3d) three_d=1; if [ "${2:-}" = full ]; then three_d_full=1; shift; fi ;;
         --steady) steady=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then steady_rounds="$2"; shift; fi ;;
         --threads) threads="$2"; shift ;;
         *) echo "bench/run.sh: unknown option '$1'" >&2; exit 2 ;;
@@ -115,6 +122,23 @@ if [ "$paper" = 1 ]; then
         rows+=("$name:$dir")
     done
     $python "$here/table.py" paper "${rows[@]}"
+fi
+
+if [ "$three_d" = 1 ]; then
+    echo
+    echo "== 3D spheres (OMP_NUM_THREADS=$threads)"
+    e4_end=0.2
+    if [ "$three_d_full" = 1 ]; then e4_end=1.2; fi
+    rows=()
+    for entry in "ten_cate_e4:cases/validation/ten_cate_e4:time.end=$e4_end" \
+                 "sphere_re20:cases/verification/sphere_re20:time.end=2.0"; do
+        IFS=: read -r name case_dir end <<<"$entry"
+        dir="$out/$name"
+        "$fddem" run "$case_dir/case.toml" -o "$dir" --force -q --set "output.field_interval=0" \
+            --set "$end"
+        rows+=("$name:$dir")
+    done
+    $python "$here/table.py" three_d "${rows[@]}"
 fi
 
 if [ "$steady" = 1 ]; then

@@ -64,6 +64,28 @@ def paper_table(entries):
         )
 
 
+def three_d_table(entries):
+    """3D sphere cases: cost per step and per cell and outer iteration, phase shares, memory."""
+    print(
+        f"{'case':<14} {'cells':>9} {'steps':>6} {'s/step':>7} {'outer/step':>10} "
+        f"{'ns/cell/outer':>13} {'momentum %':>10} {'pressure %':>10} {'coupling %':>10} "
+        f"{'contact %':>9} {'peak MiB':>9} {'B/cell':>7}"
+    )
+    for entry in entries:
+        name, run_dir = entry.split(":", 1)
+        steps, stepping, phases, outer, summary = run_costs(run_dir)
+        cells = summary["cells"]
+        print(
+            f"{name:<14} {cells:>9} {steps:>6} {stepping / steps:>7.3f} {outer / steps:>10.2f} "
+            f"{1e9 * stepping / outer / cells:>13.1f} "
+            f"{100 * phases.get('momentum', 0) / stepping:>10.1f} "
+            f"{100 * phases.get('pressure', 0) / stepping:>10.1f} "
+            f"{100 * phases.get('coupling', 0) / stepping:>10.1f} "
+            f"{100 * phases.get('contact', 0) / stepping:>9.1f} "
+            f"{summary['peak_memory_mib']:>9.1f} {summary['peak_memory_mib'] * 2**20 / cells:>7.0f}"
+        )
+
+
 def read_xy(path, skip_header=True):
     rows = []
     with open(path) as f:
@@ -278,7 +300,7 @@ def steady_table(steady_dir, peer_results, cases_dir):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("mode", choices=["cavity", "openfoam", "ghia", "paper", "steady"])
+    parser.add_argument("mode", choices=["cavity", "openfoam", "ghia", "paper", "steady", "three_d"])
     parser.add_argument("args", nargs="+")
     options = parser.parse_args()
     if options.mode == "cavity":
@@ -287,6 +309,8 @@ def main():
         ghia_table(*options.args)
     elif options.mode == "paper":
         paper_table(options.args)
+    elif options.mode == "three_d":
+        three_d_table(options.args)
     elif options.mode == "steady":
         steady_table(*options.args)
     else:

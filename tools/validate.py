@@ -273,8 +273,9 @@ def all_checks():
     if SHARED_UHLMANN is not None:
         checks.append(uhlmann_check("DKT at Re ≈ 450 vs Uhlmann (2005)"))
     if SHARED_TEN_CATE is not None:
-        checks.append(ten_cate_check("sphere settling in a box, ten Cate et al. (2002) E2 (d/h = 8.25)", "E2"))
-        checks.append(ten_cate_check("sphere settling in a box, ten Cate et al. (2002) E4 (d/h = 8.25)", "E4"))
+        for case in ("E1", "E2", "E3", "E4"):
+            checks.append(ten_cate_check(
+                f"sphere settling in a box, ten Cate et al. (2002) {case} (d/h = 8.25)", case))
     return checks
 
 
