@@ -87,11 +87,7 @@ public:
             if (!bodies[a].is_free()) {
                 continue;
             }
-            const auto axis = static_cast<std::size_t>(d);
-            const double at = walls_.origin[d] + side * walls_.length[d];
-            const ContactGeometry<Dim> g =
-                ball_wall_contact(ball_of(bodies[a]), d, side, at,
-                                  walls_.velocity[axis][static_cast<std::size_t>(side)]);
+            const ContactGeometry<Dim> g = wall_contact(bodies[a], d, side);
             mark_if_near(g.overlap, a, bodies.size());
             if (g.overlap > 0.0) {
                 apply(g, a, bodies.size(), wall_contact_key(bodies[a].id, d, side), 1.0,
@@ -101,6 +97,16 @@ public:
         }
         std::sort(history_.springs.begin(), history_.springs.end(),
                   [](const auto& x, const auto& y) { return x.key < y.key; });
+    }
+
+    /// The contact geometry of `body` with the wall on `side` (0 low, 1 high) of axis `d`.
+    [[nodiscard]] ContactGeometry<Dim> wall_contact(const Particle<Dim>& body, int d,
+                                                    int side) const
+    {
+        const auto axis = static_cast<std::size_t>(d);
+        const double at = walls_.origin[d] + side * walls_.length[d];
+        return ball_wall_contact(ball_of(body), d, side, at,
+                                 walls_.velocity[axis][static_cast<std::size_t>(side)]);
     }
 
     /// The lubrication impulses over one sub-step `step` at the bodies' current state, applied
@@ -123,11 +129,7 @@ public:
             if (!bodies[a].is_free()) {
                 continue;
             }
-            const auto axis = static_cast<std::size_t>(d);
-            const double at = walls_.origin[d] + side * walls_.length[d];
-            const ContactGeometry<Dim> g =
-                ball_wall_contact(ball_of(bodies[a]), d, side, at,
-                                  walls_.velocity[axis][static_cast<std::size_t>(side)]);
+            const ContactGeometry<Dim> g = wall_contact(bodies[a], d, side);
             damp(g, bodies[a], nullptr, std::numeric_limits<double>::infinity(), step, dt);
         }
     }

@@ -16,10 +16,13 @@
 #include <string>
 #include <unistd.h>
 
+#include "support/case_text.hpp"
 #include "support/files_and_programs.hpp"
 
 namespace fddem {
 namespace {
+
+using test::replace;
 
 namespace fs = std::filesystem;
 
@@ -227,13 +230,6 @@ struct BadBodies {
     std::string key;     ///< expected key or column
     std::string message; ///< expected substring
 };
-
-std::string replace(std::string text, const std::string& from, const std::string& to)
-{
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return text.replace(at, from.size(), to);
-}
 
 const std::string header_3d = "id, x, y, z, diameter, density\n";
 

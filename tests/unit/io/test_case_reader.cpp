@@ -16,10 +16,13 @@
 #include <sstream>
 #include <string>
 
+#include "support/case_text.hpp"
 #include "support/files_and_programs.hpp"
 
 namespace fddem {
 namespace {
+
+using test::replace;
 
 const std::string valid_case = R"([case]
 title = "cavity"
@@ -119,16 +122,13 @@ end = 1.0
     EXPECT_EQ(c.walls.velocity.size(), 3U);
 }
 
-TEST(CaseReader, ThreeDimensionalCaseRefusesThe2DSettlingScalesButTakesAReynoldsNumber)
-{
-    const std::string text = R"([domain]
+/// A closed 3D box with one resolved sphere (h = 1/32, d = 0.25), for the 3D reading tests.
+const std::string sphere_in_a_box = R"([domain]
 size = [1.0, 1.0, 1.0]
 cells = [32, 32, 32]
 [fluid]
 density = 1000.0
-[nondimensional]
-reynolds = 40.0
-velocity = 0.5
+viscosity = 1.0
 [time]
 dt = 0.1
 end = 1.0
@@ -138,12 +138,16 @@ diameter = 0.25
 density = 1500.0
 position = [0.5, 0.5, 0.5]
 )";
+
+TEST(CaseReader, ThreeDimensionalCaseRefusesThe2DSettlingScalesButTakesAReynoldsNumber)
+{
+    const std::string text = replace(sphere_in_a_box, "viscosity = 1.0\n",
+                                     "[nondimensional]\nreynolds = 40.0\nvelocity = 0.5\n");
     // μ = ρ U D / Re holds in any dimension.
     EXPECT_DOUBLE_EQ(read_case_string(text, "3d.toml").fluid.viscosity, 1000.0 * 0.5 * 0.25 / 40);
-    std::string settling = text;
-    settling.replace(settling.find("density = 1500.0\n"), 17, "");
-    settling.replace(settling.find("velocity = 0.5\n"), 15,
-                     "velocity = 0.5\ndensity_ratio = 1.5\n");
+    const std::string settling =
+        replace(replace(text, "density = 1500.0\n", ""), "velocity = 0.5\n",
+                "velocity = 0.5\ndensity_ratio = 1.5\n");
     try {
         (void)read_case_string(settling, "3d.toml");
         FAIL() << "a 3D case took the 2D settling scales";
@@ -158,27 +162,11 @@ position = [0.5, 0.5, 0.5]
 
 TEST(CaseReader, AngularVelocityIsANumberIn2DAndAVectorIn3D)
 {
-    const std::string sphere = R"([domain]
-size = [1.0, 1.0, 1.0]
-cells = [32, 32, 32]
-[fluid]
-density = 1.0
-viscosity = 1.0
-[time]
-dt = 0.1
-end = 1.0
-[[bodies]]
-shape = "sphere"
-diameter = 0.25
-density = 2.0
-position = [0.5, 0.5, 0.5]
-omega = [1.0, -2.0, 3.5]
-[[bodies]]
-shape = "sphere"
-diameter = 0.25
-density = 2.0
-position = [0.5, 0.5, 0.15]
-)";
+    const std::string sphere =
+        replace(sphere_in_a_box, "position = [0.5, 0.5, 0.5]\n",
+                "position = [0.5, 0.5, 0.5]\nomega = [1.0, -2.0, 3.5]\n[[bodies]]\n"
+                "shape = \"sphere\"\ndiameter = 0.25\ndensity = 2.0\n"
+                "position = [0.5, 0.5, 0.15]\n");
     const CaseConfig c = read_case_string(sphere, "3d.toml");
     EXPECT_EQ(c.bodies[0].omega, (std::vector<double>{1.0, -2.0, 3.5}));
     EXPECT_EQ(c.bodies[1].omega, (std::vector<double>{0.0, 0.0, 0.0})); // the default
@@ -197,13 +185,6 @@ struct BadCase {
     std::string key;                    ///< expected key
     std::string message;                ///< expected substring
 };
-
-std::string replace(std::string text, const std::string& from, const std::string& to)
-{
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return text.replace(at, from.size(), to);
-}
 
 std::vector<BadCase> bad_cases()
 {
