@@ -4,6 +4,7 @@
 #include "fddem/bodies/ball.hpp"
 #include "fddem/core/errors.hpp"
 #include "fddem/io/body_file.hpp"
+#include "fddem/io/case_checks.hpp"
 #include "fddem/io/case_document.hpp"
 #include "fddem/io/random_packing.hpp"
 
@@ -211,10 +212,12 @@ Vec<Dim> vec_of(const std::vector<double>& values)
 }
 
 /// How many bodies a random insertion asks for: its count, or its volume fraction of the region
-/// rounded to whole bodies. Refused above the jamming fraction of random sequential addition.
+/// rounded to whole bodies. Refused above the jamming fraction of random sequential addition, and
+/// for bodies the grid cannot resolve.
 template <int Dim>
-long random_count(const CaseDocument& doc, std::size_t k, const Vec<Dim>& low, const Vec<Dim>& high,
-                  const BodyConfig& entry, const BodyGroupConfig& group)
+long random_count(const CaseDocument& doc, std::size_t k, const DomainConfig& box,
+                  const Vec<Dim>& low, const Vec<Dim>& high, const BodyConfig& entry,
+                  const BodyGroupConfig& group)
 {
     const double region = (high - low).prod();
     const double body = Ball<Dim>{entry.diameter}.volume();
@@ -224,6 +227,15 @@ long random_count(const CaseDocument& doc, std::size_t k, const Vec<Dim>& low, c
     const double wanted =
         group.count > 0 ? static_cast<double>(group.count) * body / region : *group.volume_fraction;
     const char* what = Dim == 2 ? "disks" : "spheres";
+    // Checked here as well as in check_bodies, before the insertion: bodies too small for the
+    // grid would otherwise be placed by the million (memory and time) only to be refused.
+    const double h = coarsest_cell(box);
+    if (entry.diameter < min_cells_across * h) {
+        doc.fail("bodies.diameter", t.get("diameter"),
+                 fmt::format("the {} of a random insertion are {:.2g} cells across; at least {:g} "
+                             "are needed for the marker layout (refine domain.cells)",
+                             what, entry.diameter / h, min_cells_across));
+    }
     if (wanted > jamming_fraction<Dim>()) {
         doc.fail(key, node,
                  fmt::format("a volume fraction of {:.3g} % of the region is beyond random "
@@ -241,6 +253,12 @@ long random_count(const CaseDocument& doc, std::size_t k, const Vec<Dim>& low, c
         doc.fail(key, node,
                  fmt::format("{:g} of the region ({:g}) holds no body of volume {:g}", wanted,
                              region, body));
+    }
+    if (count > max_inserted_bodies) {
+        doc.fail(key, node,
+                 fmt::format("{:g} of the region is {} bodies; one random insertion places at "
+                             "most {} (give the positions in bodies.file, or larger bodies)",
+                             wanted, count, max_inserted_bodies));
     }
     return count;
 }
@@ -344,7 +362,8 @@ void make_bodies_in(CaseDocument& doc, CaseConfig& c)
             continue;
         }
         const auto [low, high] = region_of(doc, k, c, entry, group);
-        e.count = random_count<Dim>(doc, k, vec_of<Dim>(low), vec_of<Dim>(high), entry, group);
+        e.count =
+            random_count<Dim>(doc, k, c.domain, vec_of<Dim>(low), vec_of<Dim>(high), entry, group);
         if (next_id + e.count - 1 > INT_MAX) {
             doc.fail("bodies.count", &(*doc.table_array("bodies"))[k],
                      fmt::format("the ids of these bodies would pass {}", INT_MAX));

@@ -27,6 +27,17 @@ namespace fddem {
 
 class CaseDocument;
 
+/// The most bodies one random insertion places (bodies.count, or from bodies.volume_fraction):
+/// a bound on the reader's time and memory (about 1.4 kB and 7 µs per body as read; a bed of more
+/// resolved bodies than this needs ~10^10 cells, and comes from a file).
+/// The fuzz build (fuzz/CMakeLists.txt) sets a small bound, so that libFuzzer's per-input
+/// timeout catches hangs and not large valid insertions (170 µs per body under ASan).
+#ifdef FDDEM_MAX_INSERTED_BODIES
+inline constexpr long max_inserted_bodies = FDDEM_MAX_INSERTED_BODIES;
+#else
+inline constexpr long max_inserted_bodies = 1'000'000;
+#endif
+
 /// Replaces `c.bodies` (one template per [[bodies]] entry, as the keys were read) with the
 /// bodies the entries give. Each problem stops with the file, the line and the key (for a body
 /// file: its line and column).

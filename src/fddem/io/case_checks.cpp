@@ -245,25 +245,31 @@ void check_case(const CaseDocument& doc, const CaseConfig& c)
     check_lines(doc, c);
 }
 
+double coarsest_cell(const DomainConfig& box)
+{
+    double h = box.size[0] / box.cells[0];
+    for (std::size_t d = 1; d < static_cast<std::size_t>(box.dimension); ++d) {
+        h = std::max(h, box.size[d] / box.cells[d]);
+    }
+    return h;
+}
+
 void check_bodies(const CaseDocument& doc, const CaseConfig& c)
 {
     const DomainConfig& box = c.domain;
     const auto dimension = static_cast<std::size_t>(box.dimension);
-    double h = box.size[0] / box.cells[0];
-    for (std::size_t d = 1; d < dimension; ++d) {
-        h = std::max(h, box.size[d] / box.cells[d]);
-    }
+    const double h = coarsest_cell(box);
     for (const BodyConfig& b : c.bodies) {
         if ((b.shape == BodyShape::disk) != (dimension == 2)) {
             fail_body(doc, b, "shape", "shape",
                       "a " + name_of(b.shape) + " does not fit a " + std::to_string(dimension) +
                           "D case (disk: 2D, sphere: 3D)");
         }
-        if (b.diameter < 4.0 * h) {
+        if (b.diameter < min_cells_across * h) {
             fail_body(doc, b, "diameter", "diameter",
-                      fmt::format("{} is {:.2g} cells across; at least 4 are needed for the "
-                                  "marker layout (refine domain.cells)",
-                                  body_name(doc, b), b.diameter / h));
+                      fmt::format("{} is {:.2g} cells across; at least {:g} are needed for "
+                                  "the marker layout (refine domain.cells)",
+                                  body_name(doc, b), b.diameter / h, min_cells_across));
         }
         const double r = 0.5 * b.diameter;
         for (std::size_t d = 0; d < dimension; ++d) {

@@ -14,6 +14,12 @@ class CaseDocument;
 /// [time], [walls], [boundaries], [inflow] and [[output.lines]] together.
 void check_case(const CaseDocument& doc, const CaseConfig& c);
 
+/// The widest cell of the box: the grid spacing that resolves a body the least.
+double coarsest_cell(const DomainConfig& box);
+
+/// The fewest cells across a body that the marker layout accepts.
+inline constexpr double min_cells_across = 4.0;
+
 /// Bodies: the right shape for the dimension, inside the box, apart, resolved by the grid.
 void check_bodies(const CaseDocument& doc, const CaseConfig& c);
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/io/case_schema.hpp"
 
+#include "fddem/io/body_entries.hpp"
 #include "fddem/io/contact_derivation.hpp"
 #include "fddem/io/key_binding.hpp"
 
@@ -122,7 +123,7 @@ void add_body_group_keys(std::vector<KeySpec>& s)
                                  "Random insertion: this many bodies of the entry's diameter at "
                                  "random places in the region, none closer than bodies.gap to "
                                  "another body or to the region's faces."),
-                             1, 10000000, false, false),
+                             1, static_cast<double>(max_inserted_bodies), false, false),
                       &BodyGroupConfig::count));
     s.push_back(group(ranged(key("bodies", "volume_fraction", T::real, "", "none",
                                  "Random insertion: as many bodies as fill this fraction of the "

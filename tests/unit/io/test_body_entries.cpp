@@ -321,6 +321,19 @@ std::vector<BadBodies> bad_bodies()
          "case.toml", 23, "bodies.volume_fraction", "not both"},
         {"random_fraction_of_no_body", random_entry("volume_fraction = 0.001\n"), "", "case.toml",
          22, "bodies.volume_fraction", "holds no body"},
+        // Refused before the insertion: a million bodies too small for the grid took 70 s and
+        // 14 GB to place only to be refused by check_bodies.
+        {"random_too_small_for_the_grid",
+         replace(random_entry("count = 3\n"), "diameter = 0.25\ndensity = 2.0\nregion_low",
+                 "diameter = 0.05\ndensity = 2.0\nregion_low"),
+         "", "case.toml", 19, "bodies.diameter",
+         "the spheres of a random insertion are 0.8 cells across; at least 4"},
+        {"random_fraction_beyond_the_insertion_limit",
+         "[domain]\nsize = [1.0, 1.0]\ncells = [8192, 8192]\n[fluid]\ndensity = 1.0\n"
+         "viscosity = 0.01\n[time]\ndt = 0.001\nend = 0.01\n[[bodies]]\nshape = \"disk\"\n"
+         "diameter = 0.0005\ndensity = 2.0\nvolume_fraction = 0.3\n",
+         "", "case.toml", 14, "bodies.volume_fraction",
+         "one random insertion places at most 1000000"},
     };
 }
 
