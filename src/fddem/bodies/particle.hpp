@@ -60,6 +60,9 @@ struct ContactState {
     AngularVec<Dim> omega = zero_angular<Dim>();         ///< [rad/s]
     Vec<Dim> mean_force = Vec<Dim>::Zero();              ///< contact impulse / Δt [N]
     AngularVec<Dim> mean_torque = zero_angular<Dim>();   ///< [N·m]
+    /// The lubrication part of mean_force and mean_torque (outputs show the two apart).
+    Vec<Dim> lubrication_force = Vec<Dim>::Zero();
+    AngularVec<Dim> lubrication_torque = zero_angular<Dim>(); ///< [N·m]
     bool is_in_contact = false; ///< touched something (or came within the margin) this step
 };
 

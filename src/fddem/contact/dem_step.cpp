@@ -230,6 +230,8 @@ private:
             s.omega += moment / p.inertia();
             s.mean_force += impulse / dt;
             s.mean_torque += moment / dt;
+            s.lubrication_force += impulse / dt;
+            s.lubrication_torque += moment / dt;
         };
         push(first, Vec<Dim>(-on_second), g.lever_first);
         if (second != nullptr) {
@@ -274,6 +276,8 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
         c.omega = body.omega;
         c.mean_force = Vec<Dim>::Zero();
         c.mean_torque = zero_angular<Dim>();
+        c.lubrication_force = Vec<Dim>::Zero();
+        c.lubrication_torque = zero_angular<Dim>();
     }
     const double step = dt / settings.substeps;
     const double half = 0.5 * step;

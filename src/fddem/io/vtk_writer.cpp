@@ -139,6 +139,12 @@ void write_vtp(const std::filesystem::path& path, const ParticlePoints& bodies)
     const std::uint64_t omega = data.add(flatten(bodies.angular_velocities));
     const std::uint64_t orientation = data.add(flatten(bodies.orientations));
     const std::uint64_t axis = data.add(flatten(bodies.body_axes));
+    std::string vectors;
+    for (const auto& [name, values] : bodies.vectors) {
+        vectors += fmt::format("        <DataArray type=\"Float64\" Name=\"{}\" "
+                               "NumberOfComponents=\"3\" format=\"appended\" offset=\"{}\"/>\n",
+                               name, data.add(flatten(values)));
+    }
     // One vertex cell per body so ParaView draws the centres without a filter.
     std::vector<std::int64_t> ids(n);
     std::vector<std::int64_t> ends(n);
@@ -167,8 +173,9 @@ void write_vtp(const std::filesystem::path& path, const ParticlePoints& bodies)
         "NumberOfComponents=\"4\" format=\"appended\" offset=\"{}\"/>\n"
         "        <DataArray type=\"Float64\" Name=\"body_axis\" "
         "NumberOfComponents=\"3\" format=\"appended\" offset=\"{}\"/>\n"
+        "{}"
         "      </PointData>\n",
-        id, radius, velocity, omega, orientation, axis);
+        id, radius, velocity, omega, orientation, axis, vectors);
     text +=
         fmt::format("      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" "
                     "format=\"appended\" offset=\"{}\"/>\n      </Points>\n",

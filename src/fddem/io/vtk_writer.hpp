@@ -31,11 +31,14 @@ struct ParticlePoints {
     /// The body frame's x axis in the world frame: a unit vector that turns with the body
     /// (glyph it as an arrow to see a sphere roll).
     std::vector<std::array<double, 3>> body_axes;
+    /// Further 3-component point data, each named (the forces and torques apart: hydrodynamic,
+    /// contact, lubrication), one value per body.
+    std::vector<std::pair<std::string, std::vector<std::array<double, 3>>>> vectors;
 };
 
 /// Particles for ParaView: a PolyData (.vtp) of the body centres with point data id, radius,
-/// velocity, angular velocity, orientation and body axis (draw disks or spheres with the Glyph
-/// filter scaled by "radius"; open_in_paraview.py does). Atomic.
+/// velocity, angular velocity, orientation, body axis and `vectors` (draw disks or spheres with the
+/// Glyph filter scaled by "radius"; open_in_paraview.py does). Atomic.
 void write_vtp(const std::filesystem::path& path, const ParticlePoints& bodies);
 
 /// The .pvd collection: (time, file relative to the .pvd) pairs, rewritten atomically.

@@ -9,16 +9,19 @@ std::vector<BodySnapshot<Dim>> body_snapshots(const Simulation<Dim>& sim)
     std::vector<BodySnapshot<Dim>> snapshots;
     snapshots.reserve(sim.bodies().size());
     for (const Particle<Dim>& body : sim.bodies()) {
-        snapshots.push_back({.id = body.id,
-                             .radius = body.shape.radius(),
-                             .centre = body.centre,
-                             .velocity = body.velocity,
-                             .omega = body.omega,
-                             .orientation = body.orientation,
-                             .force = body.force,
-                             .torque = body.torque,
-                             .contact_force = body.contact.mean_force,
-                             .contact_torque = body.contact.mean_torque});
+        snapshots.push_back(
+            {.id = body.id,
+             .radius = body.shape.radius(),
+             .centre = body.centre,
+             .velocity = body.velocity,
+             .omega = body.omega,
+             .orientation = body.orientation,
+             .force = body.force,
+             .torque = body.torque,
+             .contact_force = body.contact.mean_force - body.contact.lubrication_force,
+             .contact_torque = body.contact.mean_torque - body.contact.lubrication_torque,
+             .lubrication_force = body.contact.lubrication_force,
+             .lubrication_torque = body.contact.lubrication_torque});
     }
     return snapshots;
 }

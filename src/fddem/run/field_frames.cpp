@@ -65,7 +65,23 @@ void write_frame(const Simulation<Dim>& sim, const fs::path& directory, PvdColle
         return;
     }
     ParticlePoints points;
+    const std::array<const char*, 6> vector_names = {"hydrodynamic_force", "hydrodynamic_torque",
+                                                     "contact_force",      "contact_torque",
+                                                     "lubrication_force",  "lubrication_torque"};
+    for (const char* vector_name : vector_names) {
+        points.vectors.emplace_back(vector_name, std::vector<std::array<double, 3>>{});
+    }
     for (const BodySnapshot<Dim>& body : bodies) {
+        const std::array<std::array<double, 3>, 6> values = {
+            padded<Dim>(body.force),
+            spin_vector<Dim>(body.torque),
+            padded<Dim>(body.contact_force),
+            spin_vector<Dim>(body.contact_torque),
+            padded<Dim>(body.lubrication_force),
+            spin_vector<Dim>(body.lubrication_torque)};
+        for (std::size_t k = 0; k < values.size(); ++k) {
+            points.vectors[k].second.push_back(values[k]);
+        }
         points.ids.push_back(body.id);
         points.centres.push_back(padded<Dim>(body.centre));
         points.radii.push_back(body.radius);

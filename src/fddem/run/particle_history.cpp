@@ -29,6 +29,8 @@ auto particle_row(double time, const BodySnapshot<Dim>& body)
         visit_angular<Dim>(visit, "torque", body.torque);
         visit_components<Dim>(visit, "contact_f", axis_names, body.contact_force);
         visit_angular<Dim>(visit, "contact_torque", body.contact_torque);
+        visit_components<Dim>(visit, "lubrication_f", axis_names, body.lubrication_force);
+        visit_angular<Dim>(visit, "lubrication_torque", body.lubrication_torque);
     };
 }
 

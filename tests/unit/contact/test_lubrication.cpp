@@ -243,7 +243,39 @@ TEST(Lubrication, BodiesWithinRangeCountAsInContact)
         test::step_dem<3>(bodies, floor, settings, 1e-3, cells, history);
         EXPECT_EQ(bodies[0].contact.is_in_contact, is_on);
         EXPECT_EQ(bodies[0].contact.mean_force.z() > 0.0, is_on);
+        // Not touching: all of the contact force is lubrication, reported apart (particles.csv's
+        // lubrication_f columns).
+        EXPECT_EQ(bodies[0].contact.lubrication_force, bodies[0].contact.mean_force);
+        EXPECT_EQ(bodies[0].contact.lubrication_torque, bodies[0].contact.mean_torque);
     }
+}
+
+TEST(Lubrication, DryAndLubricationForcesAreReportedApart)
+{
+    // A sphere pressed 0.1 mm into the floor and still approaching: the spring pushes it up and
+    // the lubrication resists the approach (its correction held at the roughness). The mean
+    // force is their sum, and the lubrication part is the same size as it is alone.
+    const double a = 0.01;
+    DemSettings settings = lubricated(1.0, 0.002, 10);
+    const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
+    const auto pressed = [&](bool is_on) {
+        std::vector<Particle<3>> bodies{
+            test::ball<3>(Vec<3>(0.05, 0.05, a - 1e-4), Vec<3>(0.0, 0.0, -0.001), a, 2000.0)};
+        settings.lubrication.is_enabled = is_on;
+        CellList<3> cells(floor.origin, floor.length, 0.03);
+        ContactHistory<3> history;
+        test::step_dem<3>(bodies, floor, settings, 1e-5, cells, history);
+        return bodies[0].contact;
+    };
+    const ContactState<3> wet = pressed(true);
+    const ContactState<3> dry = pressed(false);
+    EXPECT_GT(wet.lubrication_force.z(), 0.0);
+    EXPECT_EQ(dry.lubrication_force, Vec<3>::Zero());
+    const Vec<3> spring = wet.mean_force - wet.lubrication_force;
+    EXPECT_GT(spring.z(), 0.0);
+    // Over 10 µs the spring barely changes: the dry part with lubrication on is the dry run's
+    // to well within the lubrication force.
+    EXPECT_NEAR(spring.z(), dry.mean_force.z(), 0.01 * wet.lubrication_force.z());
 }
 
 TEST(Lubrication, ImplicitDampingIsStableWhenStiff)

@@ -74,13 +74,17 @@ TEST(VtkWriter, RectilinearGridReadsBackExactly)
 TEST(VtkWriter, ParticlePolyDataReadsBackExactly)
 {
     const fs::path path = fs::temp_directory_path() / "fddem_test_particles.vtp";
-    write_vtp(path, ParticlePoints{.ids = {4.0, 9.0},
-                                   .centres = {{1.0, 2.0, 0.0}, {3.0, 4.5, 0.0}},
-                                   .radii = {0.125, 0.25},
-                                   .velocities = {{0.5, -1.0, 0.0}, {0.0, 2.0, 0.0}},
-                                   .angular_velocities = {{0.0, 0.0, 3.0}, {0.0, 0.0, -1.0}},
-                                   .orientations = {{1.0, 0.0, 0.0, 0.0}, {0.5, 0.5, 0.5, 0.5}},
-                                   .body_axes = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}}});
+    write_vtp(
+        path,
+        ParticlePoints{.ids = {4.0, 9.0},
+                       .centres = {{1.0, 2.0, 0.0}, {3.0, 4.5, 0.0}},
+                       .radii = {0.125, 0.25},
+                       .velocities = {{0.5, -1.0, 0.0}, {0.0, 2.0, 0.0}},
+                       .angular_velocities = {{0.0, 0.0, 3.0}, {0.0, 0.0, -1.0}},
+                       .orientations = {{1.0, 0.0, 0.0, 0.0}, {0.5, 0.5, 0.5, 0.5}},
+                       .body_axes = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}},
+                       .vectors = {{"contact_force", {{1.5, 0.0, -2.0}, {0.0, 0.0, 0.0}}},
+                                   {"lubrication_force", {{0.0, 0.25, 0.0}, {-0.5, 0.0, 0.125}}}}});
     std::ifstream in(path, std::ios::binary);
     std::stringstream buffer;
     buffer << in.rdbuf();
@@ -104,6 +108,10 @@ TEST(VtkWriter, ParticlePolyDataReadsBackExactly)
               (std::vector<double>{1.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 0.5}));
     EXPECT_EQ(appended_array(file, offset_of(file, "body_axis")),
               (std::vector<double>{1.0, 0.0, 0.0, 0.0, 1.0, 0.0}));
+    EXPECT_EQ(appended_array(file, offset_of(file, "contact_force")),
+              (std::vector<double>{1.5, 0.0, -2.0, 0.0, 0.0, 0.0}));
+    EXPECT_EQ(appended_array(file, offset_of(file, "lubrication_force")),
+              (std::vector<double>{0.0, 0.25, 0.0, -0.5, 0.0, 0.125}));
     // Vertex cells: Int64 connectivity 0, 1 and offsets 1, 2 (read as raw bytes).
     const std::uint64_t at = offset_of(file, "offsets");
     const char* base = file.data() + file.find('_', file.find("<AppendedData")) + 1 + at;

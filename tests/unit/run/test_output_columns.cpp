@@ -54,11 +54,13 @@ std::string joined(const std::vector<std::string>& columns)
 TEST(OutputColumns, ParticleColumnsAreTheDocumentedOnes)
 {
     EXPECT_EQ(joined(particle_columns<2>()),
-              "time,id,x,y,u,v,omega,theta,fx,fy,torque,contact_fx,contact_fy,contact_torque");
+              "time,id,x,y,u,v,omega,theta,fx,fy,torque,contact_fx,contact_fy,contact_torque,"
+              "lubrication_fx,lubrication_fy,lubrication_torque");
     EXPECT_EQ(joined(particle_columns<3>()),
               "time,id,x,y,z,u,v,w,omega_x,omega_y,omega_z,q_w,q_x,q_y,q_z,fx,fy,fz,torque_x,"
               "torque_y,torque_z,contact_fx,contact_fy,contact_fz,contact_torque_x,"
-              "contact_torque_y,contact_torque_z");
+              "contact_torque_y,contact_torque_z,lubrication_fx,lubrication_fy,lubrication_fz,"
+              "lubrication_torque_x,lubrication_torque_y,lubrication_torque_z");
 }
 
 TEST(OutputColumns, SampleColumnsAreTheDocumentedOnes)
@@ -78,7 +80,9 @@ TEST(OutputColumns, EachParticleValueLandsInItsColumn)
                          .force = {7.0, 8.0},
                          .torque = 9.0,
                          .contact_force = {10.0, 11.0},
-                         .contact_torque = 12.0};
+                         .contact_torque = 12.0,
+                         .lubrication_force = {13.0, 14.0},
+                         .lubrication_torque = 15.0};
     EXPECT_EQ(written_row(particle_columns<2>(),
                           [&disk](CsvHistory& history) {
                               append_particle_rows<2>(history, 0.5, std::span(&disk, 1));
@@ -96,7 +100,10 @@ TEST(OutputColumns, EachParticleValueLandsInItsColumn)
                    {"torque", 9.0},
                    {"contact_fx", 10.0},
                    {"contact_fy", 11.0},
-                   {"contact_torque", 12.0}}));
+                   {"contact_torque", 12.0},
+                   {"lubrication_fx", 13.0},
+                   {"lubrication_fy", 14.0},
+                   {"lubrication_torque", 15.0}}));
 
     BodySnapshot<3> sphere{.id = 7,
                            .radius = 0.5,
@@ -107,7 +114,9 @@ TEST(OutputColumns, EachParticleValueLandsInItsColumn)
                            .force = {10.0, 11.0, 12.0},
                            .torque = {13.0, 14.0, 15.0},
                            .contact_force = {16.0, 17.0, 18.0},
-                           .contact_torque = {19.0, 20.0, 21.0}};
+                           .contact_torque = {19.0, 20.0, 21.0},
+                           .lubrication_force = {22.0, 23.0, 24.0},
+                           .lubrication_torque = {25.0, 26.0, 27.0}};
     EXPECT_EQ(written_row(particle_columns<3>(),
                           [&sphere](CsvHistory& history) {
                               append_particle_rows<3>(history, 0.5, std::span(&sphere, 1));
@@ -138,7 +147,13 @@ TEST(OutputColumns, EachParticleValueLandsInItsColumn)
                    {"contact_fz", 18.0},
                    {"contact_torque_x", 19.0},
                    {"contact_torque_y", 20.0},
-                   {"contact_torque_z", 21.0}}));
+                   {"contact_torque_z", 21.0},
+                   {"lubrication_fx", 22.0},
+                   {"lubrication_fy", 23.0},
+                   {"lubrication_fz", 24.0},
+                   {"lubrication_torque_x", 25.0},
+                   {"lubrication_torque_y", 26.0},
+                   {"lubrication_torque_z", 27.0}}));
 }
 
 TEST(OutputColumns, EachSolverValueLandsInItsColumn)

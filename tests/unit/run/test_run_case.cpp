@@ -161,7 +161,8 @@ TEST(RunCase, SettlingDiskRowsFollowTheBodyDownNoFasterThanFreeFall)
     const test::CsvTable particles = read_csv_table(run / "particles.csv");
     EXPECT_EQ(particles.columns, (std::vector<std::string>{
                                      "time", "id", "x", "y", "u", "v", "omega", "theta", "fx", "fy",
-                                     "torque", "contact_fx", "contact_fy", "contact_torque"}));
+                                     "torque", "contact_fx", "contact_fy", "contact_torque",
+                                     "lubrication_fx", "lubrication_fy", "lubrication_torque"}));
     // output.particle_interval = 0: the initial state, then every one of the 10 steps.
     ASSERT_EQ(particles.rows.size(), 11U);
     const std::vector<double> time = particles.column("time");
