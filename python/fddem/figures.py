@@ -579,6 +579,62 @@ def settling_figure(runs, labels=None):
     return fig
 
 
+def floor_of(run):
+    """(axis, side, face position) of the wall that gravity points at, or None: no gravity, or
+    that side is periodic, an inflow or an outflow. side is -1 (the low face) or +1."""
+    gravity = np.array(run.case.get("fluid", {}).get("gravity", [0.0] * run.dimension), float)
+    if not np.any(gravity):
+        return None
+    axis = int(np.argmax(np.abs(gravity)))
+    periodic = run.case["domain"].get("periodic", False)
+    if (periodic if isinstance(periodic, bool) else periodic[axis]):
+        return None
+    side = -1 if gravity[axis] < 0 else 1
+    name = f"{'xyz'[axis]}_{'low' if side < 0 else 'high'}"
+    if run.case.get("boundaries", {}).get(name, "wall") != "wall":
+        return None
+    face = run.origin[axis] + (0.0 if side < 0 else run.size[axis])
+    return axis, side, face
+
+
+def settling_gap_figure(run):
+    """Free bodies under gravity: the speed along gravity and the gap between the body's surface
+    and the wall gravity points at, both against time (the ten Cate plots, in any dimension)."""
+    if not (run.has_bodies and run.has_free_bodies):
+        return None
+    floor = floor_of(run)
+    if floor is None:
+        return None
+    axis, side, face = floor
+    histories, colours = _body_histories(run)
+    free = _free(run, histories)
+    plt = pyplot()
+    fig, (left, right) = plt.subplots(1, 2, figsize=(10.5, 4.0))
+    position, velocity = "xyz"[axis], "uvw"[axis]
+    few = len(free) <= plots.MANY_BODIES
+    for body, h in free.items():
+        radius = run.body_radius(body)
+        gap = side * (face - h[position]) - radius
+        style = {"color": colours[body], "lw": 1.0 if few else 0.5}
+        left.plot(h["time"], side * h[velocity], label=f"body {body}" if few else None, **style)
+        right.plot(h["time"], gap / (2.0 * radius), **style)
+    left.set_xlabel(run.units.label("t", "time"))
+    left.set_ylabel(run.units.label(f"speed along gravity ({'−' if side < 0 else '+'}"
+                                    f"{position})", "velocity"))
+    left.set_title("settling velocity")
+    right.set_xlabel(run.units.label("t", "time"))
+    right.set_ylabel("gap to the wall / d")
+    right.set_title(f"gap to the {position}_{'low' if side < 0 else 'high'} wall")
+    right.axhline(0.0, color="k", lw=0.7)
+    for ax in (left, right):
+        ax.grid(alpha=0.3)
+    if few and len(free) > 1:
+        left.legend(ncol=2, fontsize="small")
+    fig.suptitle(f"{run.title}\nsettling velocity and gap to the wall against time")
+    fig.tight_layout()
+    return fig
+
+
 def uhlmann_figure(run):
     """The DKT validation run against Uhlmann (2005), where the digitised data is present."""
     directory = references.uhlmann_directory()
@@ -605,6 +661,7 @@ def figure_makers(run, times=None):
         ("contacts", lambda: contacts_figure(run)),
         ("forces", lambda: forces_figure(run)),
         ("settling", lambda: settling_figure([run])),
+        ("settling_gap", lambda: settling_gap_figure(run)),
         ("uhlmann", lambda: uhlmann_figure(run)),
     ]
 

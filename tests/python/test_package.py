@@ -181,8 +181,23 @@ class Figures(unittest.TestCase):
         run = make_run(os.path.join(self.tmp.name, "three"), dimension=3, n_bodies=2)
         out, _ = self.plot(run)
         self.assert_pictures(out, ["overview", "slices", "snapshots", "solver", "positions",
-                                   "velocities", "energy", "trajectories", "contacts", "forces"])
+                                   "velocities", "energy", "trajectories", "contacts", "forces",
+                                   "settling_gap"])
         self.assertTrue(os.path.exists(os.path.join(run, "open_in_paraview.py")))
+
+    def test_gap_to_the_wall_gravity_points_at(self):
+        # The synthetic spheres (radius 0.1) fall at speed 1 from z = 0.7 under gravity along -z:
+        # their surface is 0.6 - t above the floor, (0.6 - t) / 0.2 diameters.
+        from fddem import figures
+        from fddem.run import Run
+        path = make_run(os.path.join(self.tmp.name, "gap"), dimension=3, n_bodies=2)
+        run = Run(path)
+        self.assertEqual(figures.floor_of(run), (2, -1, 0.0))
+        fig = figures.settling_gap_figure(run)
+        speed, gap = fig.axes[0].lines[0], fig.axes[1].lines[0]
+        np.testing.assert_allclose(speed.get_ydata(), 1.0)
+        np.testing.assert_allclose(gap.get_ydata(), (0.6 - gap.get_xdata()) / 0.2, atol=1e-12)
+        figures.pyplot().close(fig)
 
     def test_2d_run_without_bodies(self):
         run = make_run(os.path.join(self.tmp.name, "fluid"), dimension=2, n_bodies=0)
