@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace fddem::test {
@@ -67,7 +69,7 @@ DemWalls<Dim> box(const Vec<Dim>& length, const std::array<bool, Dim>& walled,
 }
 
 /// The overlap α at which `model` pushes with `load` [N] at rest (F_n(α, α̇ = 0) = load), by
-/// bisection on [0, upper] [m].
+/// bisection on [0, upper] [m]. Not for a model whose constants are fixed per contact.
 inline double static_overlap(const AnyContactModel& model, const ContactPair& pair, double load,
                              double upper)
 {
@@ -76,8 +78,13 @@ inline double static_overlap(const AnyContactModel& model, const ContactPair& pa
     for (int k = 0; k < 100; ++k) {
         const double mid = 0.5 * (low + high);
         const double force = std::visit(
-            [&](const auto& m) {
-                return m.law({mid, 0.0}, pair).normal_force;
+            [&](const auto& m) -> double {
+                if constexpr (PerContactModel<std::decay_t<decltype(m)>>) {
+                    throw std::invalid_argument("static_overlap: the model's constants are "
+                                                "fixed per contact");
+                } else {
+                    return m.law({mid, 0.0}, pair).normal_force;
+                }
             },
             model);
         (force < load ? low : high) = mid;

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// The state of the contacts that persists from one sub-step and time step to the next: the
-/// elastic tangential displacement ξ of each open contact (tangential_contact.hpp). Plain data,
-/// owned by the caller (Simulation), so that a checkpoint can write and read it as it is.
-/// An entry lives exactly as long as its contact: the DEM step rebuilds the list at every force
+/// elastic tangential displacement ξ of each open contact (tangential_contact.hpp) and, for a
+/// model that fixes them when a contact opens (the adaptive model), its normal constants. Plain
+/// data, owned by the caller (Simulation), so that a checkpoint can write and read it as it is. An
+/// entry lives exactly as long as its contact: the DEM step rebuilds the list at every force
 /// evaluation from the contacts that are open, so a contact that opens is dropped.
 
+#include "fddem/contact/contact_model.hpp"
 #include "fddem/core/vec.hpp"
 
 #include <algorithm>
@@ -61,18 +63,47 @@ struct TangentialSpring {
     }
 };
 
+/// The normal constants a PerContactModel fixed for one contact when it opened (contact_model.hpp).
+struct PairCoefficients {
+    ContactKey key;
+    NormalCoefficients normal;
+
+    /// Lists the members for a checkpoint archive (io/checkpoint_archive.hpp).
+    template <class Self, class Archive>
+    static void visit(Self& s, Archive& archive)
+    {
+        archive("coefficients.first", s.key.first);
+        archive("coefficients.second", s.key.second);
+        archive("coefficients.stiffness", s.normal.stiffness);
+        archive("coefficients.damping", s.normal.damping);
+    }
+};
+
+/// The entry of `key` in `entries` (sorted by key), or nullptr.
+template <class Entry>
+[[nodiscard]] const Entry* find_by_key(const std::vector<Entry>& entries, const ContactKey& key)
+{
+    const auto at = std::lower_bound(entries.begin(), entries.end(), key,
+                                     [](const Entry& e, const ContactKey& k) { return e.key < k; });
+    return at != entries.end() && at->key == key ? &*at : nullptr;
+}
+
 template <int Dim>
 struct ContactHistory {
     std::vector<TangentialSpring<Dim>> springs; ///< sorted by key, one per open contact
+    std::vector<PairCoefficients> coefficients; ///< sorted by key, one per open contact
 
     /// The spring of `key`, or nullptr if the contact has none (it just closed, or is
     /// frictionless).
     [[nodiscard]] const TangentialSpring<Dim>* find(const ContactKey& key) const
     {
-        const auto at = std::lower_bound(
-            springs.begin(), springs.end(), key,
-            [](const TangentialSpring<Dim>& s, const ContactKey& k) { return s.key < k; });
-        return at != springs.end() && at->key == key ? &*at : nullptr;
+        return find_by_key(springs, key);
+    }
+    /// The constants of `key`, or nullptr if the contact has none (it just opened, or its model
+    /// fixes none).
+    [[nodiscard]] const PairCoefficients* find_coefficients(const ContactKey& key) const
+    {
+        return find_by_key(coefficients, key);
     }
 };
 

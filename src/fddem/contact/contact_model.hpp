@@ -3,7 +3,9 @@
 /// What a contact model must provide (STYLE.md §6). A model turns the normal state of one
 /// contact and the pair's constants into the normal force and the tangential spring and dashpot
 /// coefficients; the tangential spring's history, the Coulomb limit and the rolling resistance
-/// are the same for every model (contact/tangential_contact.hpp).
+/// are the same for every model (contact/tangential_contact.hpp). A model whose constants are
+/// fixed per contact when it opens (PerContactModel: the adaptive model) also says how; the DEM
+/// keeps them in the contact history while the contact stays open.
 
 #include "fddem/contact/material.hpp"
 
@@ -24,6 +26,12 @@ struct ContactLaw {
     double tangential_damping = 0.0;   ///< c_t [N·s/m]
 };
 
+/// The normal constants a PerContactModel fixes for one contact when it opens.
+struct NormalCoefficients {
+    double stiffness = 0.0; ///< k_n [N/m^{3/2}] (2D: per unit depth)
+    double damping = 0.0;   ///< d_n [N·s/m] (2D: per unit depth)
+};
+
 template <class M>
 concept ContactModel = requires(const M m, NormalContact c, ContactPair p, double speed)
 {
@@ -36,6 +44,26 @@ concept ContactModel = requires(const M m, NormalContact c, ContactPair p, doubl
     {
         m.restitution(p)
         } -> std::same_as<double>; // normal restitution of a binary collision
+};
+
+/// A model whose law depends on constants fixed when the contact opens, from the approach speed
+/// and the fluid time step Δt then.
+template <class M>
+concept PerContactModel = requires(const M m, NormalContact c, ContactPair p, double speed,
+                                   double dt, NormalCoefficients k)
+{
+    {
+        m.coefficients(p, speed, dt)
+        } -> std::same_as<NormalCoefficients>;
+    {
+        m.law(c, p, k)
+        } -> std::same_as<ContactLaw>;
+    {
+        m.elastic_collision_time(p, speed)
+        } -> std::same_as<double>; // the collision's duration [s]
+    {
+        m.restitution(p)
+        } -> std::same_as<double>;
 };
 
 } // namespace fddem

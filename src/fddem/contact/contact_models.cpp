@@ -21,6 +21,11 @@ std::optional<AnyContactModel> make_hertz_mindlin(const ContactModelInput& /*inp
     return HertzMindlin{};
 }
 
+std::optional<AnyContactModel> make_adaptive(const ContactModelInput& input)
+{
+    return AdaptiveCollision(input.adaptive);
+}
+
 std::optional<AnyContactModel> make_none(const ContactModelInput& /*input*/)
 {
     return std::nullopt;
@@ -33,6 +38,10 @@ constexpr std::array registry{
                       "Hertz (Johnson 1985), Tsuji et al. (1992) dashpot with Antypov & Elliott "
                       "(2011) restitution, Mindlin (1949) tangential stiffness",
                       make_hertz_mindlin},
+    ContactModelEntry{ContactModelKind::adaptive, "adaptive",
+                      "Kempe & Fröhlich (2012): F = k α^{3/2} + d α̇ with k, d chosen per contact "
+                      "for a duration of N_c time steps and the dry restitution",
+                      make_adaptive},
     ContactModelEntry{ContactModelKind::none, "none", "no collisions", make_none},
 };
 

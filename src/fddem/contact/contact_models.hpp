@@ -3,6 +3,7 @@
 /// The registry of contact models (STYLE.md §6): the only list of the models a case can name in
 /// `contact.model`, each with its factory and its source. `none` turns collisions off.
 
+#include "fddem/contact/adaptive_collision.hpp"
 #include "fddem/contact/hertz_mindlin.hpp"
 #include "fddem/contact/linear_spring_dashpot.hpp"
 
@@ -16,16 +17,17 @@
 namespace fddem {
 
 /// Dispatched once per force evaluation (std::visit), never inside the pair loop.
-using AnyContactModel = std::variant<LinearSpringDashpot, HertzMindlin>;
+using AnyContactModel = std::variant<LinearSpringDashpot, HertzMindlin, AdaptiveCollision>;
 
 /// Everything a factory may need from the case.
 struct ContactModelInput {
     LinearSpringDashpot::Params linear{1.0, 0.0}; ///< k, c, κ of the linear model
-    double reference_mass = 1.0; ///< lightest movable body [kg]: the linear model's checks
+    double reference_mass = 1.0;          ///< lightest movable body [kg]: the linear model's checks
+    AdaptiveCollision::Params adaptive{}; ///< e_dry, N_c, v_min, Δt, κ of the adaptive model
 };
 
 /// The models a case can name in contact.model.
-enum class ContactModelKind { linear, hertz_mindlin, none };
+enum class ContactModelKind { linear, hertz_mindlin, adaptive, none };
 
 /// How DEM and the fluid update share a body in contact: the paper's (DEM replaces (13)–(14) and
 /// (17) while in contact) or additive (the mean contact force is added to (13)–(14)).

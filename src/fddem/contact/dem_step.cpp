@@ -32,9 +32,9 @@ class ContactForces {
 public:
     ContactForces(std::span<const Particle<Dim>> bodies, const DemWalls<Dim>& walls,
                   const Model& model, ContactHistory<Dim>& history, double margin,
-                  const LubricationSettings& lubrication, const CellList<Dim>& cells)
+                  const LubricationSettings& lubrication, const CellList<Dim>& cells, double dt)
         : force(bodies.size()), torque(bodies.size()), has_contact(bodies.size()), walls_(walls),
-          model_(model), history_(history),
+          model_(model), history_(history), dt_(dt),
           margin_(lubrication.is_enabled ? std::max(margin, lubrication.range) : margin),
           domain_(cells.domain()),
           neighbours_(std::max(margin, lubrication.is_enabled ? lubrication.range : 0.0),
@@ -62,6 +62,8 @@ public:
         neighbours_.refresh(centres_, radii_, cells);
         previous_.springs.swap(history_.springs);
         history_.springs.clear();
+        previous_.coefficients.swap(history_.coefficients);
+        history_.coefficients.clear();
         step_ = step;
         stretch_ = is_new_substep ? step : 0.0;
         in_contact = 0;
@@ -95,8 +97,9 @@ public:
                       bodies[a].radius(), outcome);
             }
         }
-        std::sort(history_.springs.begin(), history_.springs.end(),
-                  [](const auto& x, const auto& y) { return x.key < y.key; });
+        const auto by_key = [](const auto& x, const auto& y) { return x.key < y.key; };
+        std::sort(history_.springs.begin(), history_.springs.end(), by_key);
+        std::sort(history_.coefficients.begin(), history_.coefficients.end(), by_key);
     }
 
     /// The contact geometry of `body` with the wall on `side` (0 low, 1 high) of axis `d`.
@@ -163,7 +166,7 @@ private:
                const ContactKey& key, double orientation, const ContactPair& pair,
                double smaller_radius, DemOutcome& outcome)
     {
-        const ContactLaw law = model_.law({g.overlap, g.overlap_rate}, pair);
+        const ContactLaw law = law_of(g, key, pair);
         Vec<Dim> on_second = law.normal_force * g.normal;
         AngularVec<Dim> rolling = zero_angular<Dim>();
         if (pair.friction > 0.0) {
@@ -188,6 +191,23 @@ private:
             std::max(outcome.max_relative_overlap, g.overlap / smaller_radius);
         mark(first, second);
         ++in_contact;
+    }
+
+    /// The model's law for the open contact `key`. A PerContactModel's constants are those of
+    /// the history if the contact was open before, else fixed now from the approach speed α̇
+    /// (the contact has just opened) and the fluid step Δt; kept for the next evaluation.
+    ContactLaw law_of(const ContactGeometry<Dim>& g, const ContactKey& key, const ContactPair& pair)
+    {
+        const NormalContact normal{g.overlap, g.overlap_rate};
+        if constexpr (PerContactModel<Model>) {
+            const PairCoefficients* old = previous_.find_coefficients(key);
+            const NormalCoefficients k =
+                old != nullptr ? old->normal : model_.coefficients(pair, g.overlap_rate, dt_);
+            history_.coefficients.push_back({key, k});
+            return model_.law(normal, pair, k);
+        } else {
+            return model_.law(normal, pair);
+        }
     }
 
     /// One pair's (`second` null: a wall's) lubrication impulse. The relative surface velocity
@@ -242,9 +262,10 @@ private:
     const DemWalls<Dim>& walls_;
     const Model& model_;
     ContactHistory<Dim>& history_;
+    double dt_;                    ///< the fluid step Δt [s]
     double margin_;                ///< DemSettings::margin [m]
     PeriodicDomain<Dim> domain_;   ///< the cell list's: pairs across periodic sides
-    ContactHistory<Dim> previous_; ///< the springs before this evaluation
+    ContactHistory<Dim> previous_; ///< the springs and constants before this evaluation
     double step_ = 0.0;            ///< Δt_i [s]
     double stretch_ = 0.0;         ///< time over which the springs stretch now [s]
     std::vector<Vec<Dim>> centres_;
@@ -283,7 +304,7 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
     const double half = 0.5 * step;
     const double weight = 1.0 / settings.substeps; // each sub-step's share of the mean
     ContactForces<Dim, Model> contacts(bodies, walls, model, history, settings.margin,
-                                       settings.lubrication, cells);
+                                       settings.lubrication, cells, dt);
     contacts.evaluate(bodies, cells, step, false, outcome);
     const auto kick = [&](std::size_t b) {
         const Particle<Dim>& body = bodies[b];

@@ -4,8 +4,9 @@
 /// Δt_i = Δt/N_i under contact forces and torques (ball–ball and ball–wall; the model of
 /// contact_models.hpp, friction and rolling resistance of tangential_contact.hpp) plus a force
 /// held constant over the step (the buoyant weight), eq. (18), with the paper's velocity formula
-/// split into half-kicks around the drift (dem_integrator.hpp). The tangential springs persist
-/// in a ContactHistory the caller owns.
+/// split into half-kicks around the drift (dem_integrator.hpp). The tangential springs, and the
+/// constants a PerContactModel fixes when a contact opens (the adaptive model, from the approach
+/// speed then and the step's Δt), persist in a ContactHistory the caller owns.
 ///
 /// The result is used in two ways (contact.coupling): the time-averaged contact force and torque
 /// enter eqs. (13)–(14) ("additive"), or the sub-stepped end state replaces (13)–(14) and (17)
@@ -78,8 +79,9 @@ struct DemOutcome {
 /// body moves at its velocity, unaffected. `cells` must reach at least 2 r_max +
 /// settings.margin; what it reaches beyond is the skin of the sub-steps' neighbour list
 /// (contact/neighbour_list.hpp: none, and the list is rebuilt at every sub-step, if it reaches no
-/// further). `history` holds the tangential springs of the open contacts, keyed by the bodies'
-/// ids; on return it holds those open at the end of the step.
+/// further). `history` holds the tangential springs and per-contact constants of the open
+/// contacts, keyed by the bodies' ids; on return it holds those open at the end of the step.
+/// `dt` is the fluid step: the adaptive model stretches a collision to N_c dt.
 template <int Dim>
 DemOutcome advance_contacts(std::span<Particle<Dim>> bodies, const DemWalls<Dim>& walls,
                             const DemSettings& settings, double dt, CellList<Dim>& cells,

@@ -428,8 +428,11 @@ std::vector<KeySpec> case_schema()
     s.push_back(bound(key("contact", "model", T::string, none, "\"linear\"",
                           "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "
                           "eq. (18)), hertz_mindlin (Hertz normal force with a restitution "
-                          "dashpot, Mindlin tangential stiffness; docs/method.md) or none "
-                          "(bodies pass through each other and the walls)."),
+                          "dashpot, Mindlin tangential stiffness; docs/method.md), adaptive "
+                          "(Kempe & Fröhlich 2012: a Hertz spring and linear damper fitted per "
+                          "contact so that each collision lasts contact.collision_steps time "
+                          "steps and rebounds with contact.restitution) or none (bodies pass "
+                          "through each other and the walls)."),
                       &CaseConfig::contact, &ContactConfig::model));
     s.push_back(bound(key("contact", "coupling", T::string, none, "\"paper\"",
                           "paper: while in contact, DEM replaces (13)–(14) and (17) (stable in "
@@ -448,7 +451,8 @@ std::vector<KeySpec> case_schema()
                                  "Restitution coefficient e. Linear: of a wall collision of the "
                                  "lightest body (with duration), fddem derives k and c; "
                                  "hertz_mindlin: of every body and wall without its own, fddem "
-                                 "derives the dashpot. Default 1."),
+                                 "derives the dashpot; adaptive: the dry restitution e_dry of "
+                                 "every collision. Default 1."),
                              0.0, 1.0, true, false),
                       &CaseConfig::contact, &ContactConfig::surface, &SurfaceKeys::restitution));
     s.push_back(
@@ -458,8 +462,9 @@ std::vector<KeySpec> case_schema()
               &CaseConfig::contact, &ContactConfig::duration));
     s.push_back(bound(ranged(key("contact", "tangential_stiffness_ratio", T::real, none, "none",
                                  "Linear: tangential spring k_t = κ k (dashpot c √κ) used when "
-                                 "friction > 0. Default 2/7, which gives a sphere equal normal and "
-                                 "tangential periods."),
+                                 "friction > 0; adaptive: k_t = κ dF_n/dα (dashpot d_n √κ). "
+                                 "Default 2/7, which gives a sphere equal normal and tangential "
+                                 "periods."),
                              0.0, 10.0, true, false),
                       &CaseConfig::contact, &ContactConfig::tangential_stiffness_ratio));
     s.push_back(
@@ -493,6 +498,20 @@ std::vector<KeySpec> case_schema()
                            "sub-steps (t_c ∝ v^(−1/5)). Default: √(2|g|L) (L the largest box "
                            "side) + twice the fastest initial body + the fastest wall.")),
               &CaseConfig::contact, &ContactConfig::impact_velocity));
+    s.push_back(bound(ranged(key("contact", "collision_steps", T::integer, none, "none",
+                                 "Adaptive: the number N_c of time steps every collision lasts, "
+                                 "T_c = N_c Δt (Kempe & Fröhlich 2012 use 10). Default 10."),
+                             1, 1000000, false, false),
+                      &CaseConfig::contact, &ContactConfig::collision_steps));
+    s.push_back(
+        bound(positive(key("contact", "minimum_impact_velocity", T::real, "m/s", "none",
+                           "Adaptive: an impact slower than this (a resting contact) gets the "
+                           "stiffness and damping of an impact at this speed, whose stiffness "
+                           "would otherwise grow without bound (fddem's choice; docs/method.md "
+                           "§6). Default g N_c time.dt / 1000 (g the magnitude of "
+                           "fluid.gravity): a body resting under its weight then oscillates "
+                           "with a period of about 0.6 N_c Δt.")),
+              &CaseConfig::contact, &ContactConfig::minimum_impact_velocity));
     s.push_back(bound(ranged(key("contact", "velocity_damping", T::real, "kg/s", "0.0",
                                  "Velocity damping β of eq. (18) (0: none, as in the paper)."),
                              0.0, inf, false, false),
@@ -571,9 +590,12 @@ std::vector<KeySpec> case_schema()
                     "collision of the lightest body, written by fddem."));
     s.push_back(key("derived", "contact_impact_velocity", T::real, "m/s", "none",
                     "Hertz–Mindlin: the impact speed that set the sub-steps, written by fddem."));
+    s.push_back(key("derived", "contact_minimum_impact_velocity", T::real, "m/s", "none",
+                    "Adaptive: the floor of the impact speed used, written by fddem."));
     s.push_back(key("derived", "contact_duration", T::real, "s", "none",
                     "Duration of a wall collision of the lightest body (hertz_mindlin: "
-                    "undamped, at the impact velocity), written by fddem."));
+                    "undamped, at the impact velocity; adaptive: N_c time.dt), written by "
+                    "fddem."));
     s.push_back(key("derived", "contact_restitution", T::real, none, "none",
                     "Restitution of a wall collision of the lightest body, written by fddem."));
     s.push_back(key("derived", "contact_substeps", T::integer, none, "none",

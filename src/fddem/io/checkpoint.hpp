@@ -28,8 +28,9 @@
 namespace fddem {
 
 /// The format version written; only this one is read (a new state member bumps it).
-// 2: springs; 3: rest_since; 4: the adaptive time step's residual history
-inline constexpr std::uint64_t checkpoint_format_version = 4;
+// 2: springs; 3: rest_since; 4: the adaptive time step's residual history; 5: the per-contact
+// constants of the adaptive collision model
+inline constexpr std::uint64_t checkpoint_format_version = 5;
 
 /// (key, value as text) pairs: what a checkpoint's grid and bodies must share with the case it
 /// is restored into.

@@ -5,6 +5,7 @@
 #include "fddem/core/errors.hpp"
 #include "fddem/io/case_document.hpp"
 #include "fddem/io/case_names.hpp"
+#include "fddem/simulation/contact_model_input.hpp"
 
 #include <fmt/format.h>
 
@@ -148,6 +149,31 @@ void derive_hertz_mindlin(CaseDocument& doc, CaseConfig& c, const ReferenceColli
                        HertzMindlin::damping_constant(reference.pair.restitution));
 }
 
+// ---- adaptive collision model (Kempe & Fröhlich 2012)
+
+/// T_c = N_c Δt and e_dry; the floor v_min of the impact speed (contact.minimum_impact_velocity,
+/// default |g| T_c / 1000: see contact/adaptive_collision.hpp).
+void derive_adaptive(CaseDocument& doc, CaseConfig& c, const ReferenceCollision& /*reference*/)
+{
+    const ContactConfig& given = c.contact;
+    ContactDerived& derived = c.contact.derived;
+    const double duration = given.collision_steps * c.time.dt;
+    const double floor = given.minimum_impact_velocity.value_or(norm(c.fluid.gravity) * duration /
+                                                                AdaptiveCollision::floor_ratio);
+    if (!(floor > 0.0) || !std::isfinite(floor)) {
+        doc.fail("contact.minimum_impact_velocity", doc.node("contact"),
+                 fmt::format("the adaptive model needs a finite floor for slow impacts, whose "
+                             "stiffness grows without bound as the impact speed falls: the "
+                             "default |g| N_c time.dt / {:g} is {:g} m/s; give "
+                             "contact.minimum_impact_velocity",
+                             AdaptiveCollision::floor_ratio, floor));
+    }
+    derived.minimum_impact_velocity = floor;
+    derived.duration = duration;
+    derived.restitution = given.surface.restitution.value_or(1.0);
+    doc.record_derived("contact_minimum_impact_velocity", floor);
+}
+
 // ---- common to all models
 
 /// Keys that belong to another contact model stop the case: they would be ignored. (None of
@@ -166,7 +192,13 @@ void check_model_keys(const CaseDocument& doc, const CaseConfig& c,
             const auto dot = key.find('.');
             const std::string section = key.substr(0, dot);
             const std::string name = key.substr(dot + 1);
-            const std::string message = "only contact.model = \"" + name_of(other.model) +
+            std::string takers; // every model that takes the key, "a" or "b"
+            for (const ContactModelKeys& row : rows) {
+                if (std::find(row.keys.begin(), row.keys.end(), key) != row.keys.end()) {
+                    takers += (takers.empty() ? "\"" : "\" or \"") + name_of(row.model);
+                }
+            }
+            const std::string message = "only contact.model = " + takers +
                                         "\" takes this key (the case uses \"" + name_of(own.model) +
                                         "\")";
             if (section != "bodies") {
@@ -272,6 +304,12 @@ std::vector<ContactModelKeys> contact_model_keys()
          "young_modulus, contact.impact_velocity",
          nullptr,
          derive_hertz_mindlin},
+        {ContactModelKind::adaptive,
+         {"contact.collision_steps", "contact.minimum_impact_velocity",
+          "contact.tangential_stiffness_ratio"},
+         "contact.collision_steps",
+         nullptr,
+         derive_adaptive},
     };
 }
 
@@ -316,9 +354,8 @@ void derive_contact(CaseDocument& doc, CaseConfig& c)
     reference.pair = make_contact_pair(
         lightest_side, reference.has_walls ? wall_side(c.walls.material) : lightest_side);
     row->derive(doc, c, reference);
-    const ContactModelInput input{
-        {derived.stiffness, derived.damping, c.contact.tangential_stiffness_ratio}, lightest};
-    const std::optional<AnyContactModel> model = make_contact_model(c.contact.model, input);
+    const std::optional<AnyContactModel> model =
+        make_contact_model(c.contact.model, contact_model_input(c));
     const std::optional<Material> walls =
         reference.has_walls ? std::optional<Material>(c.walls.material) : std::nullopt;
     set_substeps(doc, c, *row, shortest_collision(*model, sides, walls, derived.impact_velocity));

@@ -45,6 +45,14 @@ void report_derived_values(const CaseConfig& config, RunMonitor& monitor)
                                     name_of(contact.coupling), derived.stiffness, derived.damping,
                                     derived.duration, collision_text(config)));
     }
+    if (derived.minimum_impact_velocity > 0.0) {
+        monitor.message(fmt::format("fddem: contact (adaptive, {} coupling): every collision "
+                                    "lasts {} time steps ({:.3g} s) {}; impacts slower than "
+                                    "{:.3g} are given the constants of one at that speed",
+                                    name_of(contact.coupling), contact.collision_steps,
+                                    derived.duration, collision_text(config),
+                                    derived.minimum_impact_velocity));
+    }
     const NondimensionalConfig& nondimensional = config.nondimensional;
     if (!nondimensional.reynolds) {
         return;
@@ -73,12 +81,17 @@ void watch_step(const StepReport& report, const Clock& clock, const CaseConfig& 
         record.max_overlap_time = clock.time;
         if (record.max_relative_overlap > overlap_warning && !record.has_warned_overlap) {
             record.has_warned_overlap = true;
-            monitor.message(
-                fmt::format("warning: t = {:g} s: contact overlap {:.3g} is {:.1f} % of the radius "
-                            "(above {:g} %); stiffen the contact (contact.stiffness or a shorter "
-                            "contact.duration)",
-                            clock.time, record.max_overlap, 100.0 * record.max_relative_overlap,
-                            100.0 * overlap_warning));
+            // The adaptive model's overlap grows with the stretched duration N_c Δt.
+            const char* remedy = config.contact.model == ContactModelKind::adaptive
+                                     ? "shorten the collisions (contact.collision_steps or "
+                                       "time.dt)"
+                                     : "stiffen the contact (contact.stiffness or a shorter "
+                                       "contact.duration)";
+            monitor.message(fmt::format("warning: t = {:g} s: contact overlap {:.3g} is {:.1f} % "
+                                        "of the radius (above {:g} %); {}",
+                                        clock.time, record.max_overlap,
+                                        100.0 * record.max_relative_overlap,
+                                        100.0 * overlap_warning, remedy));
         }
     }
     if (!report.is_converged) {

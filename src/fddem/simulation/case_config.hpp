@@ -156,8 +156,9 @@ struct ContactDerived {
     double duration = 0.0;        ///< of a wall collision of the lightest free body [s]
     double restitution = 1.0;     ///< of that collision
     double impact_velocity = 0.0; ///< hertz_mindlin: the impact speed that set the sub-steps [m/s]
-    double reference_mass = 0.0;  ///< the lightest free body's mass [kg]
-    int substeps = 1;             ///< N_i
+    double minimum_impact_velocity = 0.0; ///< adaptive: v_min used [m/s]
+    double reference_mass = 0.0;          ///< the lightest free body's mass [kg]
+    int substeps = 1;                     ///< N_i
 };
 
 /// [contact]: the DEM collision model (eq. (18)).
@@ -167,8 +168,10 @@ struct ContactConfig {
     std::optional<double> stiffness;               ///< linear: k [N/m]
     std::optional<double> damping;                 ///< linear: c [N·s/m]
     std::optional<double> duration;                ///< linear: t_c of a wall collision [s]
-    double tangential_stiffness_ratio = 2.0 / 7.0; ///< linear: κ = k_t / k
+    double tangential_stiffness_ratio = 2.0 / 7.0; ///< linear, adaptive: κ = k_t / k
     std::optional<double> impact_velocity;         ///< hertz_mindlin: the fastest impact [m/s]
+    int collision_steps = 10;                      ///< adaptive: N_c, T_c = N_c Δt
+    std::optional<double> minimum_impact_velocity; ///< adaptive: v_min [m/s]
     SurfaceKeys surface;           ///< of every body and wall without its own (e: also linear's)
     double velocity_damping = 0.0; ///< β [kg/s]
     double margin = 0.0;           ///< DemSettings::margin [m]

@@ -90,7 +90,8 @@ public:
     /// Seconds spent so far in each phase of the steps (summary.json).
     [[nodiscard]] const PhaseTimes& phase_times() const noexcept { return times_; }
     [[nodiscard]] const CaseConfig& config() const noexcept { return config_; }
-    /// The persistent contact state (tangential springs of the open contacts).
+    /// The persistent contact state (tangential springs and per-contact constants of the open
+    /// contacts).
     [[nodiscard]] const ContactHistory<Dim>& contact_history() const noexcept
     {
         return contact_history_;
@@ -184,6 +185,7 @@ private:
             archive("contact.dem_omega", dem.omega);
         }
         archive("contact.tangential_springs", self.contact_history_.springs);
+        archive("contact.pair_coefficients", self.contact_history_.coefficients);
         archive("rest_since", self.rest_since_);
         archive("time_step.residual", self.step_history_.residual);
         archive("time_step.previous_residual", self.step_history_.previous_residual);
@@ -238,7 +240,8 @@ private:
     Vec<Dim> gravity_ = Vec<Dim>::Zero();
     Vec<Dim> uniform_force_ = Vec<Dim>::Zero();
     std::optional<ContactSetup<Dim>> contacts_; ///< none: no collisions
-    /// The tangential springs of the open contacts, kept across time steps (checkpointed).
+    /// The tangential springs and per-contact constants of the open contacts, kept across time
+    /// steps (checkpointed).
     ContactHistory<Dim> contact_history_;
     OuterIterations<Dim> outer_;
     PhaseTimes times_;

@@ -3,6 +3,7 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/markers.hpp"
+#include "fddem/simulation/contact_model_input.hpp"
 
 #include <fmt/format.h>
 
@@ -139,10 +140,8 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
         return std::nullopt;
     }
     const ContactConfig& contact = config.contact;
-    const ContactModelInput input{
-        {contact.derived.stiffness, contact.derived.damping, contact.tangential_stiffness_ratio},
-        contact.derived.reference_mass};
-    std::optional<AnyContactModel> model = make_contact_model(contact.model, input);
+    std::optional<AnyContactModel> model =
+        make_contact_model(contact.model, contact_model_input(config));
     if (!model) {
         return std::nullopt; // contact.model = "none": no collisions
     }

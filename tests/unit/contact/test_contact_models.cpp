@@ -15,7 +15,8 @@ namespace {
 
 TEST(ContactModels, RegistryNamesTheCaseFileChoices)
 {
-    EXPECT_EQ(contact_model_names(), (std::vector<std::string>{"linear", "hertz_mindlin", "none"}));
+    EXPECT_EQ(contact_model_names(),
+              (std::vector<std::string>{"linear", "hertz_mindlin", "adaptive", "none"}));
     for (const ContactModelEntry& entry : contact_models()) {
         EXPECT_FALSE(entry.citation.empty()) << entry.name;
     }
@@ -26,6 +27,10 @@ TEST(ContactModels, RegistryNamesTheCaseFileChoices)
     EXPECT_TRUE(std::holds_alternative<LinearSpringDashpot>(*linear));
     EXPECT_TRUE(std::holds_alternative<HertzMindlin>(
         *make_contact_model(ContactModelKind::hertz_mindlin, input)));
+    ContactModelInput adaptive = input;
+    adaptive.adaptive = {0.9, 10, 0.01, 1e-3};
+    EXPECT_TRUE(std::holds_alternative<AdaptiveCollision>(
+        *make_contact_model(ContactModelKind::adaptive, adaptive)));
     // The linear model checks its coefficients as before (ζ ≥ 1 for m = 1e-6: overdamped).
     EXPECT_THROW((void)make_contact_model(ContactModelKind::linear, {{1e6, 10.0}, 1e-6}),
                  InputError);

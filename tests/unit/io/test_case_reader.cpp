@@ -548,6 +548,52 @@ std::vector<BadCase> bad_cases()
          22,
          "bodies.restitution",
          "only contact.model = \"hertz_mindlin\" takes this key"},
+        // The adaptive collision model (issue 16): e_dry in (0, 1], N_c >= 1, a floor for slow
+        // impacts, and its keys given to another model.
+        {"adaptive_zero_restitution",
+         v + body + "[contact]\nmodel = \"adaptive\"\nrestitution = 0.0\n",
+         {},
+         f,
+         24,
+         "contact.restitution",
+         "out of range"},
+        {"adaptive_restitution_above_one",
+         v + body + "[contact]\nmodel = \"adaptive\"\nrestitution = 1.5\n",
+         {},
+         f,
+         24,
+         "contact.restitution",
+         "out of range"},
+        {"adaptive_zero_collision_steps",
+         v + body + "[contact]\nmodel = \"adaptive\"\ncollision_steps = 0\n",
+         {},
+         f,
+         24,
+         "contact.collision_steps",
+         "out of range"},
+        {"adaptive_without_gravity_or_floor",
+         v + body + "[contact]\nmodel = \"adaptive\"\nrestitution = 0.9\n",
+         {},
+         f,
+         22,
+         "contact.minimum_impact_velocity",
+         "the adaptive model needs a finite floor for slow impacts"},
+        {"collision_steps_with_linear",
+         v + body + "[contact]\ncollision_steps = 5\n",
+         {},
+         f,
+         23,
+         "contact.collision_steps",
+         "only contact.model = \"adaptive\" takes this key (the case uses \"linear\")"},
+        {"tangential_ratio_with_hertz",
+         v + body +
+             "[contact]\nmodel = \"hertz_mindlin\"\nyoung_modulus = 1e9\n"
+             "tangential_stiffness_ratio = 0.5\n",
+         {},
+         f,
+         25,
+         "contact.tangential_stiffness_ratio",
+         "only contact.model = \"linear\" or \"adaptive\" takes this key"},
         {"poisson_ratio_out_of_range",
          v + body +
              "[contact]\nmodel = \"hertz_mindlin\"\nyoung_modulus = 1e9\npoisson_ratio = 0.5\n",
@@ -983,6 +1029,35 @@ TEST(CaseReader, HertzMindlinSurfacesImpactSpeedAndSubstepsAreDerived)
     // The case as run reads back to the same case.
     EXPECT_EQ(read_case_string(c.as_run, "case.toml", {}).contact.derived.substeps,
               c.contact.derived.substeps);
+}
+
+TEST(CaseReader, AdaptiveCollisionDurationFloorAndSubstepsAreDerived)
+{
+    const std::string text =
+        replace(valid_case, "viscosity = 0.01", "viscosity = 0.01\ngravity = [0.0, -10.0]") +
+        "[[bodies]]\ndiameter = 0.5\ndensity = 2.0\nposition = [0.5, 1.0]\n"
+        "[contact]\nmodel = \"adaptive\"\nrestitution = 0.9\ncollision_steps = 5\n";
+    const CaseConfig c = read_case_string(text, "adaptive.toml", {});
+    EXPECT_EQ(c.contact.model, ContactModelKind::adaptive);
+    // T_c = N_c Δt = 5 · 0.01; v_min = |g| T_c / 1000 = 5e-4 m/s; 80 sub-steps per collision:
+    // ceil(80 Δt / T_c) = 16 per step.
+    EXPECT_NEAR(c.contact.derived.duration, 0.05, 1e-15);
+    EXPECT_NEAR(c.contact.derived.minimum_impact_velocity, 5e-4, 1e-18);
+    EXPECT_EQ(c.contact.derived.restitution, 0.9);
+    EXPECT_EQ(c.contact.derived.substeps, 16);
+    EXPECT_NE(c.as_run.find("contact_minimum_impact_velocity"), std::string::npos);
+    // Given sub-steps must give at least 10 per collision: 2 per step is 10.
+    EXPECT_EQ(
+        read_case_string(text + "substeps = 2\n", "adaptive.toml", {}).contact.derived.substeps, 2);
+    EXPECT_THROW((void)read_case_string(text + "substeps = 1\n", "adaptive.toml", {}), InputError);
+    // A floor given replaces the default, and the case as run reads back to the same case.
+    const CaseConfig floored =
+        read_case_string(text + "minimum_impact_velocity = 0.02\n", "adaptive.toml", {});
+    EXPECT_EQ(floored.contact.derived.minimum_impact_velocity, 0.02);
+    const CaseConfig again = read_case_string(floored.as_run, "case.toml", {});
+    EXPECT_EQ(again.contact.derived.minimum_impact_velocity, 0.02);
+    EXPECT_EQ(again.contact.collision_steps, 5);
+    EXPECT_EQ(again.contact.derived.substeps, 16);
 }
 
 TEST(CaseReader, MissingFileIsAnInputError)

@@ -306,6 +306,23 @@ TEST(CheckpointRestart, FrictionalDisksKeepTheirTangentialSpringsBitForBit)
     EXPECT_GT(in_contact, 0);
 }
 
+TEST(CheckpointRestart, AdaptiveCollisionsKeepTheirConstantsBitForBit)
+{
+    // The adaptive model fixes k_n, d_n when a contact opens (the contact history): a
+    // restart that lost them would fix them anew from the speed at the restart.
+    const CaseConfig config =
+        read_case_string(falling_balls_case(2), "test:adaptive disks",
+                         {"contact.model=\"adaptive\"", "contact.collision_steps=10"});
+    Simulation<2> probe(config);
+    for (int k = 0; k < 21; ++k) {
+        static_cast<void>(probe.advance());
+    }
+    EXPECT_FALSE(probe.contact_history().coefficients.empty())
+        << "the checkpoint should catch a collision in flight";
+    const int in_contact = expect_bit_identical_continuation<2>(config, 21, 8);
+    EXPECT_GT(in_contact, 0);
+}
+
 TEST(CheckpointRestart, SphereOnTheFloorContinuesBitForBit3D)
 {
     const CaseConfig config = read_case_string(falling_balls_case(3), "test:sphere");
