@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 
 import fddem  # noqa: E402
-from fddem import io, slices, ten_cate  # noqa: E402
+from fddem import impulsive_cylinder, io, slices, ten_cate  # noqa: E402
 from synthetic_run import make_run, velocity_field  # noqa: E402
 
 # A figure with a picture in it: pixel values vary. A blank (one-colour) PNG has variance 0;
@@ -316,3 +316,57 @@ class TenCate(unittest.TestCase):
         self.assertGreater(fast["u_max_error"], 0.10)
         self.assertGreater(fast["w_rms"], 0.05)
         self.assertGreater(fast["travel_rms"], 0.3)
+
+
+class ImpulsiveCylinder(unittest.TestCase):
+    """tools/compare_impulsive_cylinder.py's measures on runs that follow the Koumoutsakos &
+    Leonard (1995) Re 550 curve: C_D from particles.csv and case.toml, tU/R, the window."""
+
+    def write_run(self, directory, scale, speed=2.0, diameter=0.5, density=3.0):
+        # A case in other units than the reference's (U = 2, D = 0.5, ρ = 3, Re 550 kept), so
+        # that C_D = 2 F_x/(ρU²D) and tU/R are checked, not assumed to be 1.
+        ref_tau, ref_drag = impulsive_cylinder.load_reference(550)
+        viscosity = density * speed * diameter / 550.0
+        with open(os.path.join(directory, "case.toml"), "w") as f:
+            f.write(f"[fluid]\ndensity = {density}\nviscosity = {viscosity!r}\n\n"
+                    f"[inflow]\nvelocity = {speed}\n\n"
+                    f"[[bodies]]\ndiameter = {diameter}\nmotion = 'fixed'\n")
+        # Sampled at the reference's own times too, so that interpolating back is exact.
+        tau = np.union1d(np.linspace(0.0, 7.2, 2001), ref_tau)
+        t = tau * 0.5 * diameter / speed
+        drag = scale * np.interp(tau, ref_tau, ref_drag)
+        fx = drag * 0.5 * density * speed**2 * diameter
+        with open(os.path.join(directory, "particles.csv"), "w") as f:
+            f.write("time,id,x,y,u,v,omega,theta,fx,fy,torque,contact_fx,contact_fy,contact_torque\n")
+            for row in zip(t, fx):
+                f.write("{},0,8,10,0,0,0,0,{},0,0,0,0,0\n".format(*row))
+
+    def test_the_curve_itself_matches_and_a_higher_drag_does_not(self):
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_run(directory, 1.0)
+            same = impulsive_cylinder.compare(directory)
+            self.write_run(directory, 1.05)
+            high = impulsive_cylinder.compare(directory)
+        self.assertEqual(same["reynolds"], 550)
+        # The reference's own values at its own times: exact up to round-off.
+        self.assertLess(same["rms"], 1e-9)
+        self.assertAlmostEqual(high["rms"], 0.05, delta=1e-9)
+        self.assertAlmostEqual(high["max"], 0.05, delta=1e-9)
+        self.assertAlmostEqual(high["mean"], 0.05, delta=1e-9)
+        # Window [0.5, 6] of tU/R: the Re 550 points 0.613 ... 5.841 (19 of them).
+        self.assertEqual(same["points"], 19)
+        self.assertAlmostEqual(same["window"][0], 0.61327)
+        self.assertAlmostEqual(same["window"][1], 5.84133)
+
+    def test_a_short_run_is_compared_where_it_reaches_and_another_re_is_refused(self):
+        ref_tau, ref_drag = impulsive_cylinder.load_reference(550)
+        tau = np.union1d(np.linspace(0.0, 2.0, 401), ref_tau[ref_tau < 2.0])
+        drag = np.interp(tau, ref_tau, ref_drag) * np.where(tau > 1.5, 1.2, 1.0)
+        r = impulsive_cylinder.deviation(tau, drag, ref_tau, ref_drag)
+        self.assertEqual(r["window"][1], 1.79054)  # the last reference point before tU/R = 2
+        self.assertAlmostEqual(r["max"], 0.2, delta=1e-9)
+        self.assertAlmostEqual(r["max_at"], 1.55155)
+        self.assertIsNone(impulsive_cylinder.nearest_reference_reynolds(1000.0))
+        self.assertEqual(impulsive_cylinder.nearest_reference_reynolds(3001.0), 3000)
+        with self.assertRaises(ValueError):
+            impulsive_cylinder.deviation(tau, drag, ref_tau, ref_drag, window=(3.0, 6.0))
