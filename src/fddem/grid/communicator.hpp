@@ -1,36 +1,82 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// The processes that share one grid, and the one place where values owned by each are
-/// combined (STYLE.md §13, DESIGN.md §6). Every reduction over the grid (max_over, sum_over in
-/// loops.hpp: residuals, norms, Courant numbers, fluxes) ends here.
+/// combined or exchanged (STYLE.md §13, DESIGN.md §6). Every reduction over the grid (max_over,
+/// sum_over in loops.hpp: residuals, norms, Courant numbers, fluxes) ends here, and so does the
+/// halo exchange's point-to-point traffic (grid/halo_exchange.hpp). MPI appears nowhere else
+/// in the grid and the solvers.
 ///
-/// This is the single-process communicator: one rank, and every reduction is the identity on
-/// the local value, so a run computes bit for bit what it computed before reductions went
-/// through it. When the grid is split across MPI ranks this class holds the Cartesian
-/// communicator, and max() and sum() become MPI_Allreduce with MPI_MAX and MPI_SUM (the sum of
-/// the ranks' partial sums, taken in rank order so that reruns are bit-identical); nothing that
-/// calls them changes.
+/// Communicator::self() is this process alone, without MPI: every reduction is the identity on
+/// the local value, so a one-process run computes bit for bit what it computed before
+/// reductions went through here, and does not start MPI. A communicator over several processes
+/// wraps an MPI communicator (MPI must be running). Its sums are taken in rank order from the
+/// gathered partial values, not by MPI_Allreduce, whose order of additions the MPI standard
+/// leaves open: the same ranks then give bit-identical reruns.
 
+#include <memory>
 #include <span>
+#include <utility>
 
 namespace fddem {
 
+namespace detail {
+struct MpiCommunicator; // communicator.cpp: holds the MPI_Comm, so mpi.h stays out of headers
+}
+
 class Communicator {
 public:
-    /// This process alone (MPI_COMM_SELF's role): also what rank-local work, such as the
-    /// coarse levels of the momentum multigrid, reduces over.
-    [[nodiscard]] static Communicator self() noexcept { return {}; }
+    /// The rank of a side with no neighbour (MPI_PROC_NULL's role): exchanges with it are
+    /// skipped.
+    static constexpr int no_rank = -1;
 
-    [[nodiscard]] int rank() const noexcept { return 0; }
-    [[nodiscard]] int size() const noexcept { return 1; }
+    /// This process alone: the same as self().
+    Communicator() noexcept = default;
+    /// This process alone (MPI_COMM_SELF's role, without starting MPI): also what rank-local
+    /// work, such as the coarse levels of the momentum multigrid, reduces over.
+    [[nodiscard]] static Communicator self() noexcept { return {}; }
+    /// Every process mpirun started (MPI_COMM_WORLD). MPI must be running.
+    [[nodiscard]] static Communicator world();
+
+    [[nodiscard]] int rank() const noexcept;
+    [[nodiscard]] int size() const noexcept;
+    /// True if this is more than one process (or one process through MPI).
+    [[nodiscard]] bool uses_mpi() const noexcept { return mpi_ != nullptr; }
 
     /// The largest of the ranks' `local` values. A NaN anywhere must come out as NaN or +∞
     /// (loops.hpp's max_keeping_nan), so that a blown-up residual never looks converged.
-    [[nodiscard]] double max(double local) const noexcept { return local; }
-    /// The sum of the ranks' `local` values.
-    [[nodiscard]] double sum(double local) const noexcept { return local; }
+    [[nodiscard]] double max(double local) const;
+    /// The sum of the ranks' `local` values, added in rank order.
+    [[nodiscard]] double sum(double local) const;
     /// Element-wise sums over the ranks, in place (one message for several totals).
-    void sum(std::span<double> values) const noexcept { static_cast<void>(values); }
+    void sum(std::span<double> values) const;
+
+    /// Sends `send` to rank `destination` and receives `receive` from rank `source` in one
+    /// step (MPI_Sendrecv), so that a ring of such calls cannot deadlock. Either rank may be
+    /// no_rank: that half is skipped. On this process alone both must be 0 or no_rank, and the
+    /// values are copied. `tag` tells apart several exchanges between the same two ranks.
+    void exchange(std::span<const double> send, int destination, std::span<double> receive,
+                  int source, int tag) const;
+
+    /// The ranks laid out as a Cartesian grid of dims[0] × … processes (MPI_Cart_create, ranks
+    /// in the same order), periodic where `is_periodic` says. The product of `dims` must be
+    /// size(). On this process alone (all dims 1) the result is self().
+    [[nodiscard]] Communicator cartesian(std::span<const int> dims,
+                                         std::span<const bool> is_periodic) const;
+    /// This rank's coordinates in the Cartesian layout (all 0 on self()).
+    void cartesian_coords(std::span<int> coords) const;
+    /// The ranks one step below and above this one along `axis` (MPI_Cart_shift): no_rank
+    /// beyond a side that is not periodic. This process alone: itself if `axis_is_periodic`.
+    [[nodiscard]] std::pair<int, int> cartesian_neighbours(int axis, bool axis_is_periodic) const;
+
+private:
+    friend struct CommunicatorAccess; // communicator.cpp: the MPI_Comm for hypre and FFTW-MPI
+
+    explicit Communicator(std::shared_ptr<const detail::MpiCommunicator> mpi) noexcept
+        : mpi_(std::move(mpi))
+    {
+    }
+
+    std::shared_ptr<const detail::MpiCommunicator> mpi_;
 };
 
 } // namespace fddem

@@ -16,7 +16,7 @@ class GridArray {
 public:
     GridArray() = default;
     explicit GridArray(const MacGrid<Dim>& grid, double value = 0.0)
-        : strides_(), data_(grid.storage_size(), value)
+        : strides_(), lo_(grid.storage_lo()), data_(grid.storage_size(), value)
     {
         for (int d = 0; d < Dim; ++d) {
             strides_[static_cast<std::size_t>(d)] = grid.stride(d);
@@ -49,12 +49,13 @@ private:
     {
         std::ptrdiff_t off = 0;
         for (std::size_t d = 0; d < i.size(); ++d) {
-            off += static_cast<std::ptrdiff_t>(i[d] + MacGrid<Dim>::n_ghost) * strides_[d];
+            off += static_cast<std::ptrdiff_t>(i[d] - lo_[d]) * strides_[d];
         }
         return off;
     }
 
     std::array<std::ptrdiff_t, Dim> strides_{};
+    Index<Dim> lo_{}; // the storage box's lowest index (MacGrid::storage_lo)
     std::vector<double> data_;
 };
 

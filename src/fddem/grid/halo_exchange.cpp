@@ -3,6 +3,8 @@
 
 #include "fddem/grid/loops.hpp"
 
+#include <vector>
+
 namespace fddem {
 namespace {
 
@@ -27,12 +29,150 @@ void for_each_ghost_layer(const MacGrid<Dim>& grid, int axis, F&& f)
     }
 }
 
+// Along an axis split across ranks, with the block [lo, hi) and storage [lo − g, hi + 1 + g)
+// (g = n_ghost), every array (cells and faces alike) has the same layers:
+//
+//   ghosts below  [lo − g, lo)      images of the rank below's   [hi' − g, hi')
+//   ghosts above  [hi, hi + g + 1)  images of the rank above's   [lo', lo' + g + 1)
+//
+// (hi' of the rank below is lo; lo' of the rank above is hi; across a periodic side the two
+// differ by n.) A face array normal to the axis owns face hi only at the domain's bounded high
+// side, where there is no rank above. So fill sends [lo, lo + g + 1) down and [hi − g, hi) up,
+// and accumulate sends the ghosts back and adds them there. Neighbours along an axis share
+// their blocks' extent along the other axes, hence the same layer shape.
+constexpr int layers_below = MacGrid<2>::n_ghost;
+constexpr int layers_above = MacGrid<2>::n_ghost + 1;
+static_assert(layers_above <= min_block_cells, "a halo must come from the nearest block");
+
+enum Tag : int { fill_down = 11, fill_up = 12, sum_up = 13, sum_down = 14 };
+
+/// The storage box cut to layers [first, first + count) along `axis`.
+template <int Dim>
+Box<Dim> layers(const MacGrid<Dim>& grid, int axis, int first, int count)
+{
+    Box<Dim> box = grid.storage_box();
+    box.lo[static_cast<std::size_t>(axis)] = first;
+    box.hi[static_cast<std::size_t>(axis)] = first + count;
+    return box;
+}
+
+template <int Dim>
+std::vector<double> pack(const GridArray<Dim>& a, const Box<Dim>& box)
+{
+    std::vector<double> buffer;
+    buffer.reserve(box.size());
+    for_each_cell_in_vtk_order(box, [&](const Index<Dim>& i) { buffer.push_back(a(i)); });
+    return buffer;
+}
+
+template <int Dim>
+void unpack(GridArray<Dim>& a, const Box<Dim>& box, const std::vector<double>& buffer)
+{
+    std::size_t k = 0;
+    for_each_cell_in_vtk_order(box, [&](const Index<Dim>& i) { a(i) = buffer[k++]; });
+}
+
+template <int Dim>
+void add(GridArray<Dim>& a, const Box<Dim>& box, const std::vector<double>& buffer)
+{
+    std::size_t k = 0;
+    for_each_cell_in_vtk_order(box, [&](const Index<Dim>& i) { a(i) += buffer[k++]; });
+}
+
+/// The four layer boxes of a split axis.
+template <int Dim>
+struct SplitLayers {
+    Box<Dim> ghosts_below, ghosts_above, first_owned, last_owned;
+};
+
+template <int Dim>
+SplitLayers<Dim> split_layers(const MacGrid<Dim>& grid, int axis)
+{
+    const auto& block = grid.owned_cells();
+    const int lo = block.lo[static_cast<std::size_t>(axis)];
+    const int hi = block.hi[static_cast<std::size_t>(axis)];
+    return {layers(grid, axis, lo - layers_below, layers_below),
+            layers(grid, axis, hi, layers_above), layers(grid, axis, lo, layers_above),
+            layers(grid, axis, hi - layers_below, layers_below)};
+}
+
+template <int Dim>
+void fill_split_axis(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a)
+{
+    const auto [below, above] = grid.partition().neighbours[static_cast<std::size_t>(axis)];
+    const auto& comm = grid.communicator();
+    const SplitLayers<Dim> l = split_layers(grid, axis);
+    std::vector<double> from_above(above == Communicator::no_rank ? 0 : l.ghosts_above.size());
+    comm.exchange(pack(a, l.first_owned), below, from_above, above, fill_down);
+    std::vector<double> from_below(below == Communicator::no_rank ? 0 : l.ghosts_below.size());
+    comm.exchange(pack(a, l.last_owned), above, from_below, below, fill_up);
+    if (above != Communicator::no_rank) {
+        unpack(a, l.ghosts_above, from_above);
+    }
+    if (below != Communicator::no_rank) {
+        unpack(a, l.ghosts_below, from_below);
+    }
+}
+
+template <int Dim>
+void zero(GridArray<Dim>& a, const Box<Dim>& box)
+{
+    for_each_cell_in_vtk_order(box, [&](const Index<Dim>& i) { a(i) = 0.0; });
+}
+
+template <int Dim>
+void accumulate_split_axis(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a)
+{
+    const auto [below, above] = grid.partition().neighbours[static_cast<std::size_t>(axis)];
+    const auto& comm = grid.communicator();
+    const SplitLayers<Dim> l = split_layers(grid, axis);
+    // Both ghost regions are packed and cleared before anything is added: with a thin block
+    // the owned layers they are added to overlap.
+    std::vector<double> up;
+    std::vector<double> down;
+    if (above != Communicator::no_rank) {
+        up = pack(a, l.ghosts_above);
+        zero(a, l.ghosts_above);
+    }
+    if (below != Communicator::no_rank) {
+        down = pack(a, l.ghosts_below);
+        zero(a, l.ghosts_below);
+    }
+    std::vector<double> from_below(below == Communicator::no_rank ? 0 : l.first_owned.size());
+    comm.exchange(up, above, from_below, below, sum_up);
+    std::vector<double> from_above(above == Communicator::no_rank ? 0 : l.last_owned.size());
+    comm.exchange(down, below, from_above, above, sum_down);
+    if (below != Communicator::no_rank) {
+        add(a, l.first_owned, from_below);
+    }
+    if (above != Communicator::no_rank) {
+        add(a, l.last_owned, from_above);
+    }
+}
+
+template <int Dim>
+void zero_split_axis(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a)
+{
+    const auto [below, above] = grid.partition().neighbours[static_cast<std::size_t>(axis)];
+    const SplitLayers<Dim> l = split_layers(grid, axis);
+    if (above != Communicator::no_rank) {
+        zero(a, l.ghosts_above);
+    }
+    if (below != Communicator::no_rank) {
+        zero(a, l.ghosts_below);
+    }
+}
+
 } // namespace
 
 template <int Dim>
 void HaloExchange<Dim>::fill(GridArray<Dim>& a) const
 {
     for (int d = 0; d < Dim; ++d) {
+        if (grid_->is_split(d)) {
+            fill_split_axis(*grid_, d, a);
+            continue;
+        }
         if (!grid_->is_periodic(d)) {
             continue;
         }
@@ -47,6 +187,10 @@ void HaloExchange<Dim>::accumulate(GridArray<Dim>& a) const
 {
     // The adjoint of fill's axis-by-axis copies: the same steps transposed, in reverse order.
     for (int d = Dim - 1; d >= 0; --d) {
+        if (grid_->is_split(d)) {
+            accumulate_split_axis(*grid_, d, a);
+            continue;
+        }
         if (!grid_->is_periodic(d)) {
             continue;
         }
@@ -63,6 +207,10 @@ template <int Dim>
 void HaloExchange<Dim>::zero_ghosts(GridArray<Dim>& a) const
 {
     for (int d = 0; d < Dim; ++d) {
+        if (grid_->is_split(d)) {
+            zero_split_axis(*grid_, d, a);
+            continue;
+        }
         if (!grid_->is_periodic(d)) {
             continue;
         }

@@ -16,19 +16,22 @@
 /// then fill(a) if the ghosts are read again. The ghosts must hold only what was spread into
 /// them, hence the zero_ghosts first.
 ///
-/// Single process (this implementation): the only such ghosts are those across periodic axes,
-/// whose owner is the entry one period away (index i mod n along the axis, MacGrid's table).
-/// Ghosts across the other sides belong to the boundary conditions (fluid/boundary_conditions)
-/// and are left untouched. Axes are exchanged one after the other over the whole storage
-/// extent of the others (fill in axis order, accumulate in reverse), so edge and corner ghosts
-/// of a doubly periodic box are right as well.
+/// Along an axis that is not split across ranks, the only such ghosts are those across a
+/// periodic side, whose owner is the entry one period away (index i mod n along the axis,
+/// MacGrid's table), copied in place. Ghosts across the other sides belong to the boundary
+/// conditions (fluid/boundary_conditions) and are left untouched.
 ///
-/// Many processes (not yet): the owned box is the rank's Cartesian block, the ghosts of an
-/// interior side are filled from the neighbouring rank's owned entries with the same global
-/// index (cells and faces alike: a face on a block interface is owned by the rank above it),
-/// and accumulate sends ghost values to that rank, which adds them in a fixed order. The halo is
-/// MacGrid::n_ghost ≥ the widest kernel's support, and this class then holds the neighbour
-/// ranks and the message buffers; its callers do not change.
+/// Along an axis split across MPI ranks (grid/grid_partition.hpp), the ghosts of a block side
+/// that faces another block (or, across a periodic side, the block at the other end) are
+/// owned by that neighbour: fill receives them from it and accumulate sends them to it, which
+/// adds them in a fixed order (halo_exchange.cpp lays out the layers). The messages go through
+/// the grid's Communicator. Blocks are at least min_block_cells thick, so every ghost comes
+/// from the nearest block.
+///
+/// Axes are exchanged one after the other over the whole storage extent of the others (fill in
+/// axis order, accumulate in reverse), so edge and corner ghosts of a doubly periodic box, and
+/// the corner four ranks share, are right as well. fill, accumulate and zero_ghosts are
+/// collective over the grid's ranks: every rank calls them in the same order.
 
 #include "fddem/grid/fields.hpp"
 #include "fddem/grid/mac_grid.hpp"

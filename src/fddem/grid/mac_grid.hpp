@@ -29,15 +29,24 @@
 ///
 /// A periodic axis has no boundary: index i and i + n are the same cell or face, and every
 /// index outside [0, n) is the image of one inside. On one process, the owner of a periodic
-/// ghost is the entry it is an image of; once the grid is split into Cartesian blocks, it is
-/// the entry of that index on the neighbouring rank, and the owned box is that rank's block.
+/// ghost is the entry it is an image of.
+///
+/// Split across MPI ranks (grid/grid_partition.hpp), a process holds one Cartesian block:
+/// owned_cells() is the block, [lo, hi) along each axis, indices stay global, and the arrays
+/// are allocated over the block's storage, [lo, hi + 1) grown by n_ghost. In the table above
+/// [0, n) becomes [lo, hi); the faces normal to an axis at the block's high side are owned by
+/// the next block, except the boundary face n of a bounded axis, owned by the last block. A
+/// ghost inside the domain (or across a periodic side) is then owned by the neighbouring
+/// rank. cells(), cell_box() and face_box() stay the whole domain's.
 
 #include "fddem/core/index.hpp"
 #include "fddem/core/periodic_domain.hpp"
 #include "fddem/core/vec.hpp"
 #include "fddem/grid/communicator.hpp"
+#include "fddem/grid/grid_partition.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace fddem {
@@ -49,9 +58,13 @@ public:
     static constexpr int n_ghost = 2;
 
     /// `cells` per axis (each ≥ 1), box `origin` and `length` [m] (each > 0), and which axes
-    /// are periodic (none by default).
+    /// are periodic (none by default), all on this process.
     MacGrid(const Index<Dim>& cells, const Vec<Dim>& origin, const Vec<Dim>& length,
             const std::array<bool, Dim>& is_periodic = {});
+    /// The same grid, of which this process holds the block of `partition` (partition_grid
+    /// with the same cells and periodic axes).
+    MacGrid(const Index<Dim>& cells, const Vec<Dim>& origin, const Vec<Dim>& length,
+            const std::array<bool, Dim>& is_periodic, GridPartition<Dim> partition);
 
     [[nodiscard]] const Index<Dim>& cells() const noexcept { return cells_; }
     [[nodiscard]] int cells(int axis) const noexcept { return cells_[ax(axis)]; }
@@ -69,7 +82,14 @@ public:
         return {origin_, length_, is_periodic_};
     }
     /// The processes sharing this grid; every reduction over it goes through this.
-    [[nodiscard]] const Communicator& communicator() const noexcept { return communicator_; }
+    [[nodiscard]] const Communicator& communicator() const noexcept
+    {
+        return partition_.communicator;
+    }
+    /// This process's block, its place among the ranks and its neighbours.
+    [[nodiscard]] const GridPartition<Dim>& partition() const noexcept { return partition_; }
+    /// Whether `axis` is split across several ranks.
+    [[nodiscard]] bool is_split(int axis) const noexcept { return partition_.ranks[ax(axis)] > 1; }
     /// Cell size along `axis` [m].
     [[nodiscard]] double spacing(int axis) const noexcept { return spacing_[axis]; }
     [[nodiscard]] const Vec<Dim>& spacing() const noexcept { return spacing_; }
@@ -79,18 +99,32 @@ public:
 
     /// All cells of the domain, [0, n).
     [[nodiscard]] Box<Dim> cell_box() const noexcept { return {Index<Dim>{}, cells_}; }
-    /// The cells this process owns (the whole domain until the grid is split across ranks).
-    [[nodiscard]] Box<Dim> owned_cells() const noexcept { return cell_box(); }
+    /// The cells this process owns: its block (the whole domain on one process).
+    [[nodiscard]] const Box<Dim>& owned_cells() const noexcept { return partition_.block; }
     /// The faces normal to `axis` this process owns: those of the owned cells (each cell owns
-    /// its low face) and, on a bounded axis, the boundary face n as well; on a periodic axis
-    /// face n is the image of face 0 and a ghost (see the table at the top).
+    /// its low face) and, on a bounded axis, the boundary face n as well if the block reaches
+    /// it; on a periodic axis face n is the image of face 0 and a ghost (see the table at the
+    /// top).
     [[nodiscard]] Box<Dim> owned_faces(int axis) const noexcept
     {
         Box<Dim> box = owned_cells();
-        if (!is_periodic(axis)) {
+        if (!is_periodic(axis) && box.hi[ax(axis)] == cells_[ax(axis)]) {
             box.hi[ax(axis)] += 1;
         }
         return box;
+    }
+    /// Whether this process owns the cell holding the point x (x inside the domain, wrapped
+    /// along periodic axes): the rank that interpolates and spreads a marker there.
+    [[nodiscard]] bool owns_point(const Vec<Dim>& x) const noexcept
+    {
+        for (int d = 0; d < Dim; ++d) {
+            const int i = static_cast<int>(std::floor((x[d] - origin_[d]) / spacing_[d]));
+            const int clamped = i < 0 ? 0 : (i >= cells_[ax(d)] ? cells_[ax(d)] - 1 : i);
+            if (clamped < partition_.block.lo[ax(d)] || clamped >= partition_.block.hi[ax(d)]) {
+                return false;
+            }
+        }
+        return true;
     }
     /// All faces normal to `axis` from 0 to n (on a periodic axis face n is a ghost:
     /// owned_faces is the box to update).
@@ -98,10 +132,11 @@ public:
     {
         return {Index<Dim>{}, cells_ + unit<Dim>(axis)};
     }
-    /// The box every array is allocated over (n + 1 per axis, plus ghosts).
+    /// The box every array is allocated over: the owned cells' [lo, hi + 1) per axis, plus
+    /// ghosts ([−n_ghost, n + 1 + n_ghost) on one process).
     [[nodiscard]] Box<Dim> storage_box() const noexcept
     {
-        Box<Dim> b{Index<Dim>{}, cells_};
+        Box<Dim> b = owned_cells();
         for (int d = 0; d < Dim; ++d) {
             b.hi[ax(d)] += 1;
         }
@@ -117,10 +152,12 @@ public:
     {
         std::ptrdiff_t off = 0;
         for (int d = 0; d < Dim; ++d) {
-            off += static_cast<std::ptrdiff_t>(i[ax(d)] + n_ghost) * stride_[ax(d)];
+            off += static_cast<std::ptrdiff_t>(i[ax(d)] - storage_lo_[ax(d)]) * stride_[ax(d)];
         }
         return off;
     }
+    /// The lowest index of the storage box along each axis.
+    [[nodiscard]] const Index<Dim>& storage_lo() const noexcept { return storage_lo_; }
     [[nodiscard]] std::ptrdiff_t stride(int axis) const noexcept { return stride_[ax(axis)]; }
     [[nodiscard]] std::size_t storage_size() const noexcept { return storage_size_; }
 
@@ -131,10 +168,11 @@ private:
     Vec<Dim> origin_;
     Vec<Dim> length_;
     std::array<bool, Dim> is_periodic_;
-    Communicator communicator_;
+    GridPartition<Dim> partition_;
     Vec<Dim> spacing_;
     double cell_volume_;
     std::array<std::ptrdiff_t, Dim> stride_{};
+    Index<Dim> storage_lo_{};
     std::size_t storage_size_;
 };
 

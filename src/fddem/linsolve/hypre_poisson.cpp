@@ -2,6 +2,7 @@
 #include "fddem/linsolve/hypre_poisson.hpp"
 
 #include "fddem/core/errors.hpp"
+#include "fddem/grid/communicator_mpi.hpp"
 #include "fddem/grid/loops.hpp"
 #include "fddem/linsolve/mpi_runtime.hpp"
 
@@ -85,10 +86,13 @@ template <int Dim>
 HyprePoissonSolver<Dim>::HyprePoissonSolver(const MacGrid<Dim>& grid,
                                             const std::array<bool, Dim>& is_periodic,
                                             double tolerance, int max_iterations)
-    : grid_(grid), handles_(std::make_unique<Handles>()), values_(grid.n_cells())
+    : grid_(grid), handles_(std::make_unique<Handles>()), values_(grid.owned_cells().size())
 {
     ensure_mpi_started();
     const MaskedFloatingPointTraps masked;
+    // The grid's ranks (this process alone unless the grid is split): each sets the values of
+    // its own block, and hypre exchanges what crosses the blocks.
+    const MPI_Comm comm = mpi_handle(grid.communicator());
     Handles& h = *handles_;
     const Box<Dim> box = grid.owned_cells();
     std::array<HYPRE_Int, Dim> periodic{};
@@ -98,7 +102,7 @@ HyprePoissonSolver<Dim>::HyprePoissonSolver(const MacGrid<Dim>& grid,
         h.upper[k] = box.hi[k] - 1;
         periodic[k] = is_periodic[k] ? grid.cells(d) : 0;
     }
-    HYPRE_StructGridCreate(MPI_COMM_WORLD, Dim, &h.grid);
+    HYPRE_StructGridCreate(comm, Dim, &h.grid);
     HYPRE_StructGridSetExtents(h.grid, h.lower.data(), h.upper.data());
     HYPRE_StructGridSetPeriodic(h.grid, periodic.data());
     HYPRE_StructGridAssemble(h.grid);
@@ -117,9 +121,9 @@ HyprePoissonSolver<Dim>::HyprePoissonSolver(const MacGrid<Dim>& grid,
     // The matrix of −∇² (positive semi-definite, for CG): 2/h² on the diagonal per axis,
     // −1/h² to each neighbour; a neighbour across a wall is dropped and its 1/h² taken off the
     // diagonal (zero normal gradient).
-    HYPRE_StructMatrixCreate(MPI_COMM_WORLD, h.grid, h.stencil, &h.matrix);
+    HYPRE_StructMatrixCreate(comm, h.grid, h.stencil, &h.matrix);
     HYPRE_StructMatrixInitialize(h.matrix);
-    std::vector<double> coefficients(grid.n_cells() * n_entries);
+    std::vector<double> coefficients(values_.size() * n_entries);
     std::size_t flat = 0;
     for_each_cell_in_vtk_order(box, [&](const Index<Dim>& c) {
         double* row = &coefficients[flat * n_entries];
@@ -141,19 +145,19 @@ HyprePoissonSolver<Dim>::HyprePoissonSolver(const MacGrid<Dim>& grid,
                                    entries.data(), coefficients.data());
     HYPRE_StructMatrixAssemble(h.matrix);
 
-    HYPRE_StructVectorCreate(MPI_COMM_WORLD, h.grid, &h.rhs);
+    HYPRE_StructVectorCreate(comm, h.grid, &h.rhs);
     HYPRE_StructVectorInitialize(h.rhs);
     HYPRE_StructVectorAssemble(h.rhs);
-    HYPRE_StructVectorCreate(MPI_COMM_WORLD, h.grid, &h.solution);
+    HYPRE_StructVectorCreate(comm, h.grid, &h.solution);
     HYPRE_StructVectorInitialize(h.solution);
     HYPRE_StructVectorAssemble(h.solution);
 
-    HYPRE_StructPCGCreate(MPI_COMM_WORLD, &h.solver);
+    HYPRE_StructPCGCreate(comm, &h.solver);
     HYPRE_StructPCGSetTol(h.solver, tolerance);
     HYPRE_StructPCGSetMaxIter(h.solver, max_iterations);
     HYPRE_StructPCGSetTwoNorm(h.solver, 1);
     HYPRE_StructPCGSetRelChange(h.solver, 0);
-    HYPRE_StructPFMGCreate(MPI_COMM_WORLD, &h.preconditioner);
+    HYPRE_StructPFMGCreate(comm, &h.preconditioner);
     HYPRE_StructPFMGSetMaxIter(h.preconditioner, 1);
     HYPRE_StructPFMGSetTol(h.preconditioner, 0.0);
     HYPRE_StructPFMGSetZeroGuess(h.preconditioner);
@@ -188,10 +192,11 @@ void HyprePoissonSolver<Dim>::solve(const CellField<Dim>& rhs, CellField<Dim>& p
     const Box<Dim> box = grid_.owned_cells();
     // Right-hand side of −∇²φ = −rhs, with the mean removed (compatibility of the singular
     // problem); the initial guess is phi as given.
+    const Communicator& comm = grid_.communicator();
     double mean = 0.0;
     std::size_t flat = 0;
     for_each_cell_in_vtk_order(box, [&](const Index<Dim>& c) { mean += rhs(c); });
-    mean /= static_cast<double>(values_.size());
+    mean = comm.sum(mean) / static_cast<double>(grid_.n_cells());
     for_each_cell_in_vtk_order(box, [&](const Index<Dim>& c) { values_[flat++] = mean - rhs(c); });
     HYPRE_StructVectorSetBoxValues(h.rhs, h.lower.data(), h.upper.data(), values_.data());
     flat = 0;
@@ -205,8 +210,8 @@ void HyprePoissonSolver<Dim>::solve(const CellField<Dim>& rhs, CellField<Dim>& p
     last_iterations_ = static_cast<int>(iterations);
 
     HYPRE_StructVectorGetBoxValues(h.solution, h.lower.data(), h.upper.data(), values_.data());
-    const double solution_mean =
-        std::accumulate(values_.begin(), values_.end(), 0.0) / static_cast<double>(values_.size());
+    const double solution_mean = comm.sum(std::accumulate(values_.begin(), values_.end(), 0.0)) /
+                                 static_cast<double>(grid_.n_cells());
     flat = 0;
     for_each_cell_in_vtk_order(
         box, [&](const Index<Dim>& c) { phi(c) = values_[flat++] - solution_mean; });

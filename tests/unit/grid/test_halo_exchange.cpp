@@ -15,6 +15,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "support/storage_sums.hpp"
+
 namespace fddem {
 namespace {
 
@@ -79,23 +81,6 @@ GridArray<Dim> random_integers(const MacGrid<Dim>& grid, std::mt19937& rng)
     return a;
 }
 
-template <int Dim>
-double dot(const MacGrid<Dim>& grid, const GridArray<Dim>& a, const GridArray<Dim>& b)
-{
-    double sum = 0.0;
-    for_each_cell_in_vtk_order(grid.storage_box(),
-                               [&](const Index<Dim>& i) { sum += a(i) * b(i); });
-    return sum;
-}
-
-template <int Dim>
-double total(const MacGrid<Dim>& grid, const GridArray<Dim>& a)
-{
-    double sum = 0.0;
-    for_each_cell_in_vtk_order(grid.storage_box(), [&](const Index<Dim>& i) { sum += a(i); });
-    return sum;
-}
-
 TYPED_TEST(HaloExchangeTest, FillMakesEveryPeriodicGhostTheImageOfItsOwnerAndKeepsTheRest)
 {
     constexpr int Dim = TypeParam::value;
@@ -127,10 +112,10 @@ TYPED_TEST(HaloExchangeTest, AccumulateIsTheAdjointOfFill)
         halo.fill(filled);
         GridArray<Dim> accumulated = y;
         halo.accumulate(accumulated);
-        EXPECT_EQ(dot(grid, filled, y), dot(grid, x, accumulated));
+        EXPECT_EQ(test::storage_dot(grid, filled, y), test::storage_dot(grid, x, accumulated));
         // Not trivially: with periodic axes both differ from ⟨x, y⟩.
         if (grid.domain().has_periodic_axis()) {
-            EXPECT_NE(dot(grid, filled, y), dot(grid, x, y));
+            EXPECT_NE(test::storage_dot(grid, filled, y), test::storage_dot(grid, x, y));
         }
     }
 }
@@ -151,7 +136,7 @@ TYPED_TEST(HaloExchangeTest, AccumulateAddsEveryImageToItsOwnerZeroesItAndKeepsT
         for_each_cell_in_vtk_order(grid.storage_box(), [&](const Index<Dim>& i) {
             EXPECT_EQ(a(i), owner_of<Dim>(grid, i) == i ? expected(i) : 0.0);
         });
-        EXPECT_EQ(total(grid, a), total(grid, before));
+        EXPECT_EQ(test::storage_total(grid, a), test::storage_total(grid, before));
     }
 }
 

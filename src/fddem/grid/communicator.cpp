@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/grid/communicator.hpp"
+
+#include "fddem/core/errors.hpp"
+#include "fddem/grid/communicator_mpi.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace fddem {
+
+namespace detail {
+
+/// An MPI communicator; one this code created is freed with it (while MPI still runs).
+struct MpiCommunicator {
+    MPI_Comm comm = MPI_COMM_NULL;
+    bool is_owned = false;
+    int rank = 0;
+    int size = 1;
+    bool is_cartesian = false;
+
+    MpiCommunicator(MPI_Comm c, bool owned) : comm(c), is_owned(owned)
+    {
+        MPI_Comm_rank(comm, &rank);
+        MPI_Comm_size(comm, &size);
+        int topology = MPI_UNDEFINED;
+        MPI_Topo_test(comm, &topology);
+        is_cartesian = topology == MPI_CART;
+    }
+    MpiCommunicator(const MpiCommunicator&) = delete;
+    MpiCommunicator& operator=(const MpiCommunicator&) = delete;
+    ~MpiCommunicator()
+    {
+        int is_finished = 0;
+        MPI_Finalized(&is_finished);
+        if (is_owned && is_finished == 0) {
+            MPI_Comm_free(&comm);
+        }
+    }
+};
+
+} // namespace detail
+
+struct CommunicatorAccess {
+    static const detail::MpiCommunicator* of(const Communicator& comm) noexcept
+    {
+        return comm.mpi_.get();
+    }
+};
+
+MPI_Comm mpi_handle(const Communicator& comm) noexcept
+{
+    const detail::MpiCommunicator* mpi = CommunicatorAccess::of(comm);
+    return mpi != nullptr ? mpi->comm : MPI_COMM_SELF;
+}
+
+namespace {
+
+void check(int status, const char* what)
+{
+    if (status != MPI_SUCCESS) {
+        throw InternalError(std::string(what) + " failed");
+    }
+}
+
+} // namespace
+
+Communicator Communicator::world()
+{
+    int is_started = 0;
+    MPI_Initialized(&is_started);
+    if (is_started == 0) {
+        throw InternalError("Communicator::world() needs MPI to be running");
+    }
+    return Communicator(std::make_shared<const detail::MpiCommunicator>(MPI_COMM_WORLD, false));
+}
+
+int Communicator::rank() const noexcept
+{
+    return mpi_ ? mpi_->rank : 0;
+}
+
+int Communicator::size() const noexcept
+{
+    return mpi_ ? mpi_->size : 1;
+}
+
+double Communicator::max(double local) const
+{
+    if (!mpi_) {
+        return local;
+    }
+    // Gathered rather than MPI_MAX: a NaN must win (MPI_MAX's comparison would drop it).
+    std::vector<double> all(static_cast<std::size_t>(mpi_->size));
+    check(MPI_Allgather(&local, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, mpi_->comm),
+          "MPI_Allgather");
+    double result = all.front();
+    for (const double v : all) {
+        if (std::isnan(v)) {
+            return v;
+        }
+        result = std::max(result, v);
+    }
+    return result;
+}
+
+double Communicator::sum(double local) const
+{
+    double value = local;
+    sum(std::span<double>(&value, 1));
+    return value;
+}
+
+void Communicator::sum(std::span<double> values) const
+{
+    if (!mpi_ || values.empty()) {
+        return;
+    }
+    // Every rank's partial values, then added in rank order on every rank: the same bits on
+    // each, and in each rerun (MPI_Allreduce leaves the order of additions open).
+    const auto n = values.size();
+    std::vector<double> all(n * static_cast<std::size_t>(mpi_->size));
+    check(MPI_Allgather(values.data(), static_cast<int>(n), MPI_DOUBLE, all.data(),
+                        static_cast<int>(n), MPI_DOUBLE, mpi_->comm),
+          "MPI_Allgather");
+    for (std::size_t k = 0; k < n; ++k) {
+        double total = 0.0;
+        for (std::size_t r = 0; r < static_cast<std::size_t>(mpi_->size); ++r) {
+            total += all[r * n + k];
+        }
+        values[k] = total;
+    }
+}
+
+void Communicator::exchange(std::span<const double> send, int destination,
+                            std::span<double> receive, int source, int tag) const
+{
+    if (!mpi_) {
+        if ((destination != 0 && destination != no_rank) || (source != 0 && source != no_rank)) {
+            throw InternalError("Communicator::exchange: no such rank on this process alone");
+        }
+        if (destination == 0 && source == 0) {
+            if (send.size() != receive.size()) {
+                throw InternalError("Communicator::exchange: sizes differ");
+            }
+            std::copy(send.begin(), send.end(), receive.begin());
+        }
+        return;
+    }
+    const int to = destination == no_rank ? MPI_PROC_NULL : destination;
+    const int from = source == no_rank ? MPI_PROC_NULL : source;
+    check(MPI_Sendrecv(send.data(), static_cast<int>(send.size()), MPI_DOUBLE, to, tag,
+                       receive.data(), static_cast<int>(receive.size()), MPI_DOUBLE, from, tag,
+                       mpi_->comm, MPI_STATUS_IGNORE),
+          "MPI_Sendrecv");
+}
+
+Communicator Communicator::cartesian(std::span<const int> dims,
+                                     std::span<const bool> is_periodic) const
+{
+    int product = 1;
+    for (const int d : dims) {
+        product *= d;
+    }
+    if (product != size() || dims.size() != is_periodic.size()) {
+        throw InternalError("Communicator::cartesian: " + std::to_string(product) + " blocks for " +
+                            std::to_string(size()) + " ranks");
+    }
+    if (!mpi_) {
+        return {};
+    }
+    std::vector<int> periods(is_periodic.begin(), is_periodic.end());
+    MPI_Comm cart = MPI_COMM_NULL;
+    // reorder = 0: rank r of this communicator stays rank r, so the layout is the same on
+    // every machine and outputs gathered in rank order do not depend on MPI's choice.
+    check(MPI_Cart_create(mpi_->comm, static_cast<int>(dims.size()), dims.data(), periods.data(), 0,
+                          &cart),
+          "MPI_Cart_create");
+    return Communicator(std::make_shared<const detail::MpiCommunicator>(cart, true));
+}
+
+void Communicator::cartesian_coords(std::span<int> coords) const
+{
+    if (!mpi_ || !mpi_->is_cartesian) {
+        if (mpi_ && mpi_->size > 1) {
+            throw InternalError("Communicator::cartesian_coords: not a Cartesian communicator");
+        }
+        std::fill(coords.begin(), coords.end(), 0);
+        return;
+    }
+    check(MPI_Cart_coords(mpi_->comm, mpi_->rank, static_cast<int>(coords.size()), coords.data()),
+          "MPI_Cart_coords");
+}
+
+std::pair<int, int> Communicator::cartesian_neighbours(int axis, bool axis_is_periodic) const
+{
+    if (!mpi_ || !mpi_->is_cartesian) {
+        if (mpi_ && mpi_->size > 1) {
+            throw InternalError("Communicator::cartesian_neighbours: not a Cartesian communicator");
+        }
+        const int self = axis_is_periodic ? 0 : no_rank;
+        return {self, self};
+    }
+    int below = MPI_PROC_NULL;
+    int above = MPI_PROC_NULL;
+    check(MPI_Cart_shift(mpi_->comm, axis, 1, &below, &above), "MPI_Cart_shift");
+    return {below == MPI_PROC_NULL ? no_rank : below, above == MPI_PROC_NULL ? no_rank : above};
+}
+
+} // namespace fddem

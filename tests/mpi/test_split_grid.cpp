@@ -1,0 +1,340 @@
+// SPDX-License-Identifier: MIT
+// The grid split across MPI ranks (issue 15, DESIGN.md §6), run by CTest under
+// `mpirun -n 1`, `-n 2` and `-n 4` (tests/CMakeLists.txt). Every rank builds the whole grid on
+// its own as the one-process reference, and the split grid with its block, and checks its own
+// entries against the reference:
+//
+// - fill makes every entry of the block's storage (owned, ghosts from other ranks, ghosts across
+//   periodic sides, ghosts left to the boundary conditions) equal to the one-process grid's
+//   entry of the same global index after its fill: bit for bit, for cells and faces;
+// - accumulate is fill's adjoint over all ranks and entries (exact, on integers);
+// - markers spread by the rank that owns their cell, then accumulated, give the one-process
+//   spreading on every owned entry, to round-off (the additions come in another order);
+//   interpolation at a rank's own markers after a fill is bit for bit the one-process value;
+//   every marker has exactly one owner.
+//
+// The markers include points around the corner that four ranks share and next to the
+// periodic seam, and each layout is tried with every combination of periodic axes.
+
+#include "fddem/coupling/delta_kernel.hpp"
+#include "fddem/coupling/transfer.hpp"
+#include "fddem/grid/halo_exchange.hpp"
+#include "fddem/grid/loops.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "support/storage_sums.hpp"
+
+namespace fddem {
+namespace {
+
+template <class T>
+class SplitGridTest : public ::testing::Test {
+};
+using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
+TYPED_TEST_SUITE(SplitGridTest, Dimensions);
+
+constexpr std::size_t ax(int d)
+{
+    return static_cast<std::size_t>(d);
+}
+
+/// Cells with uneven splits on 2 and 4 ranks, every block ≥ min_block_cells thick.
+template <int Dim>
+Index<Dim> test_cells()
+{
+    if constexpr (Dim == 2) {
+        return {13, 12};
+    } else {
+        return {13, 12, 14};
+    }
+}
+
+/// Every layout of `n` ranks with at most two axes split, and the automatic one.
+template <int Dim>
+std::vector<Index<Dim>> layouts(int n)
+{
+    std::vector<Index<Dim>> result;
+    Index<Dim> ones{};
+    ones.fill(1);
+    for (int a = 0; a < Dim; ++a) {
+        Index<Dim> one_axis = ones;
+        one_axis[ax(a)] = n;
+        result.push_back(one_axis);
+        if (n == 4) {
+            for (int b = a + 1; b < Dim; ++b) {
+                Index<Dim> two_axes = ones;
+                two_axes[ax(a)] = 2;
+                two_axes[ax(b)] = 2;
+                result.push_back(two_axes);
+            }
+        }
+    }
+    result.push_back(choose_rank_layout<Dim>(test_cells<Dim>(), n));
+    std::sort(result.begin(), result.end());
+    result.erase(std::unique(result.begin(), result.end()), result.end());
+    return result;
+}
+
+template <int Dim>
+std::array<bool, Dim> periodic_from(int code)
+{
+    std::array<bool, Dim> periodic{};
+    for (int d = 0; d < Dim; ++d) {
+        periodic[ax(d)] = ((code >> d) & 1) != 0;
+    }
+    return periodic;
+}
+
+template <int Dim>
+std::string describe(const Index<Dim>& ranks, const std::array<bool, Dim>& periodic)
+{
+    std::ostringstream text;
+    text << "ranks";
+    for (int d = 0; d < Dim; ++d) {
+        text << ' ' << ranks[ax(d)];
+    }
+    text << ", periodic";
+    for (int d = 0; d < Dim; ++d) {
+        text << (periodic[ax(d)] ? " y" : " n");
+    }
+    return text.str();
+}
+
+/// The whole grid on this process, and the same grid split with `ranks`.
+template <int Dim>
+struct GridPair {
+    MacGrid<Dim> whole;
+    MacGrid<Dim> split;
+};
+
+template <int Dim>
+GridPair<Dim> make_grids(const Index<Dim>& ranks, const std::array<bool, Dim>& periodic)
+{
+    const Index<Dim> cells = test_cells<Dim>();
+    Vec<Dim> origin;
+    Vec<Dim> length;
+    for (int d = 0; d < Dim; ++d) {
+        origin[d] = -0.5 + 0.25 * d;
+        length[d] = 1.0 + 0.3 * d;
+    }
+    return {MacGrid<Dim>(cells, origin, length, periodic),
+            MacGrid<Dim>(cells, origin, length, periodic,
+                         partition_grid<Dim>(Communicator::world(), cells, periodic, ranks))};
+}
+
+/// The box of entries `grid` owns in an array of kind `kind` (−1: cells, a: faces normal to a).
+template <int Dim>
+Box<Dim> owned(const MacGrid<Dim>& grid, int kind)
+{
+    return kind < 0 ? grid.owned_cells() : grid.owned_faces(kind);
+}
+
+/// A whole number made from a global index and the array kind, different for nearby entries.
+template <int Dim>
+double label(const Index<Dim>& i, int kind)
+{
+    double value = kind + 2;
+    for (int d = 0; d < Dim; ++d) {
+        value = 37.0 * value + (i[ax(d)] + 5);
+    }
+    return value;
+}
+
+/// Owned entries hold +label, every other entry −label.
+template <int Dim>
+GridArray<Dim> labelled(const MacGrid<Dim>& grid, int kind)
+{
+    GridArray<Dim> a(grid);
+    const Box<Dim> mine = owned(grid, kind);
+    for_each_cell_in_vtk_order(grid.storage_box(), [&](const Index<Dim>& i) {
+        a(i) = mine.contains(i) ? label<Dim>(i, kind) : -label<Dim>(i, kind);
+    });
+    return a;
+}
+
+TYPED_TEST(SplitGridTest, FillGivesEveryEntryItsOneProcessValue)
+{
+    constexpr int Dim = TypeParam::value;
+    const int n_ranks = Communicator::world().size();
+    for (const Index<Dim>& ranks : layouts<Dim>(n_ranks)) {
+        for (int code = 0; code < (1 << Dim); ++code) {
+            const auto periodic = periodic_from<Dim>(code);
+            SCOPED_TRACE(describe<Dim>(ranks, periodic));
+            const GridPair<Dim> g = make_grids<Dim>(ranks, periodic);
+            for (int kind = -1; kind < Dim; ++kind) {
+                GridArray<Dim> reference = labelled<Dim>(g.whole, kind);
+                HaloExchange<Dim>(g.whole).fill(reference);
+                GridArray<Dim> a = labelled<Dim>(g.split, kind);
+                HaloExchange<Dim>(g.split).fill(a);
+                int n_wrong = 0;
+                for_each_cell_in_vtk_order(g.split.storage_box(), [&](const Index<Dim>& i) {
+                    n_wrong += a(i) == reference(i) ? 0 : 1;
+                });
+                EXPECT_EQ(n_wrong, 0) << "array kind " << kind;
+            }
+        }
+    }
+}
+
+TYPED_TEST(SplitGridTest, AccumulateIsTheAdjointOfFillOverAllRanks)
+{
+    constexpr int Dim = TypeParam::value;
+    const Communicator world = Communicator::world();
+    std::mt19937 rng(7 + static_cast<unsigned>(world.rank()));
+    std::uniform_int_distribution<int> value(-20, 20);
+    for (const Index<Dim>& ranks : layouts<Dim>(world.size())) {
+        for (int code = 0; code < (1 << Dim); ++code) {
+            const auto periodic = periodic_from<Dim>(code);
+            SCOPED_TRACE(describe<Dim>(ranks, periodic));
+            const GridPair<Dim> g = make_grids<Dim>(ranks, periodic);
+            const HaloExchange<Dim> halo(g.split);
+            GridArray<Dim> x(g.split);
+            GridArray<Dim> y(g.split);
+            for_each_cell_in_vtk_order(g.split.storage_box(), [&](const Index<Dim>& i) {
+                x(i) = value(rng);
+                y(i) = value(rng);
+            });
+            const double sum_before = world.sum(test::storage_total(g.split, y));
+            GridArray<Dim> filled = x;
+            halo.fill(filled);
+            GridArray<Dim> accumulated = y;
+            halo.accumulate(accumulated);
+            // Integers: every sum is exact, so the identity holds bit for bit.
+            EXPECT_EQ(world.sum(test::storage_dot(g.split, filled, y)),
+                      world.sum(test::storage_dot(g.split, x, accumulated)));
+            EXPECT_EQ(world.sum(test::storage_total(g.split, accumulated)), sum_before);
+        }
+    }
+}
+
+/// Marker positions: random points, points around the corner where the blocks of `ranks` meet
+/// (the low corner of the block at coordinates 1 along each split axis), and points next to
+/// the domain's low and high sides (the seam of a periodic axis). The same on every rank.
+template <int Dim>
+std::vector<Vec<Dim>> markers(const MacGrid<Dim>& grid, const Index<Dim>& ranks)
+{
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Vec<Dim>> points;
+    for (int k = 0; k < 60; ++k) {
+        Vec<Dim> x;
+        for (int d = 0; d < Dim; ++d) {
+            x[d] = grid.origin()[d] + unit(rng) * grid.length()[d];
+        }
+        points.push_back(x);
+    }
+    Vec<Dim> corner;
+    for (int d = 0; d < Dim; ++d) {
+        const int lo = ranks[ax(d)] > 1 ? block_range(grid.cells(d), ranks[ax(d)], 1).first
+                                        : grid.cells(d) / 2;
+        corner[d] = grid.origin()[d] + lo * grid.spacing(d);
+    }
+    for (int k = 0; k < 40; ++k) {
+        Vec<Dim> x;
+        for (int d = 0; d < Dim; ++d) {
+            x[d] = corner[d] + (unit(rng) - 0.5) * 3.0 * grid.spacing(d);
+        }
+        points.push_back(x);
+    }
+    for (int k = 0; k < 20; ++k) {
+        Vec<Dim> x;
+        for (int d = 0; d < Dim; ++d) {
+            const double near_side = unit(rng) * 1.5 * grid.spacing(d);
+            x[d] = k % 2 == 0 ? grid.origin()[d] + near_side
+                              : grid.origin()[d] + grid.length()[d] - near_side;
+        }
+        points.push_back(x);
+    }
+    return points;
+}
+
+TYPED_TEST(SplitGridTest, MarkersSpreadAndInterpolatedByTheirOwnersMatchOneProcess)
+{
+    constexpr int Dim = TypeParam::value;
+    using Kernel = Peskin4Kernel;
+    const Communicator world = Communicator::world();
+    for (const Index<Dim>& ranks : layouts<Dim>(world.size())) {
+        for (int code = 0; code < (1 << Dim); ++code) {
+            const auto periodic = periodic_from<Dim>(code);
+            SCOPED_TRACE(describe<Dim>(ranks, periodic));
+            const GridPair<Dim> g = make_grids<Dim>(ranks, periodic);
+            const std::vector<Vec<Dim>> points = markers<Dim>(g.whole, ranks);
+            std::mt19937 rng(13);
+            std::uniform_real_distribution<double> force(-1.0, 1.0);
+            std::vector<Vec<Dim>> forces(points.size());
+            for (auto& f : forces) {
+                for (int d = 0; d < Dim; ++d) {
+                    f[d] = force(rng);
+                }
+            }
+            // Spreading (D), then the reverse halo sum.
+            FaceField<Dim> reference(g.whole);
+            FaceField<Dim> spread(g.split);
+            int n_owned = 0;
+            for (std::size_t m = 0; m < points.size(); ++m) {
+                spread_vector<Dim, Kernel>(g.whole, reference, points[m], forces[m], 0.01);
+                if (g.split.owns_point(points[m])) {
+                    ASSERT_TRUE((fits_in_storage<Dim, Kernel>(g.split, points[m])));
+                    spread_vector<Dim, Kernel>(g.split, spread, points[m], forces[m], 0.01);
+                    ++n_owned;
+                }
+            }
+            EXPECT_EQ(world.sum(n_owned), static_cast<double>(points.size()));
+            HaloExchange<Dim>(g.whole).accumulate(reference);
+            HaloExchange<Dim>(g.split).accumulate(spread);
+            for (int a = 0; a < Dim; ++a) {
+                double largest = 0.0;
+                for_each_cell_in_vtk_order(g.whole.owned_faces(a), [&](const Index<Dim>& i) {
+                    largest = std::max(largest, std::abs(reference[a](i)));
+                });
+                double worst = 0.0;
+                for_each_cell_in_vtk_order(g.split.owned_faces(a), [&](const Index<Dim>& i) {
+                    worst = std::max(worst, std::abs(spread[a](i) - reference[a](i)));
+                });
+                EXPECT_GT(largest, 0.01);
+                EXPECT_LE(worst, 1e-14 * largest) << "component " << a;
+            }
+            // Interpolation (I) after a fill of the same owned values.
+            FaceField<Dim> u_whole(g.whole);
+            FaceField<Dim> u_split(g.split);
+            for (int a = 0; a < Dim; ++a) {
+                auto smooth = [&](const Index<Dim>& i) {
+                    const Vec<Dim> x = g.whole.face_centre(a, i);
+                    double v = a + 1.0;
+                    for (int d = 0; d < Dim; ++d) {
+                        v *= std::cos(2.0 + (d + 1) * x[d] + 0.3 * a);
+                    }
+                    return v;
+                };
+                for_each_cell_in_vtk_order(g.whole.owned_faces(a),
+                                           [&](const Index<Dim>& i) { u_whole[a](i) = smooth(i); });
+                for_each_cell_in_vtk_order(g.split.owned_faces(a),
+                                           [&](const Index<Dim>& i) { u_split[a](i) = smooth(i); });
+            }
+            HaloExchange<Dim>(g.whole).fill(u_whole);
+            HaloExchange<Dim>(g.split).fill(u_split);
+            int n_different = 0;
+            for (const Vec<Dim>& x : points) {
+                if (!g.split.owns_point(x)) {
+                    continue;
+                }
+                const Vec<Dim> expected = interpolate_velocity<Dim, Kernel>(g.whole, u_whole, x);
+                const Vec<Dim> got = interpolate_velocity<Dim, Kernel>(g.split, u_split, x);
+                n_different += expected == got ? 0 : 1;
+            }
+            EXPECT_EQ(n_different, 0);
+        }
+    }
+}
+
+} // namespace
+} // namespace fddem
