@@ -39,17 +39,12 @@ def main():
               f"{r['max_at']:8.2f} {100 * r['mean']:+7.2f}% {r['window'][0]:6.2f}–{r['window'][1]:<6.2f} "
               f"{r['points']:6d}")
     if args.output:
-        from fddem.figures import pyplot
+        from fddem.figures import save_one_panel
 
-        plt = pyplot()
-        fig, axes = plt.subplots(figsize=(7, 4.5))
-        impulsive_cylinder.plot(axes, args.runs, labels, window=tuple(args.window))
-        axes.legend(fontsize=8)
-        axes.grid(alpha=0.3)
-        axes.set_title("Impulsively started cylinder (shaded: the compared window)", fontsize=10)
-        fig.tight_layout()
-        fig.savefig(args.output, dpi=120)
-        print(args.output)
+        print(save_one_panel(
+            args.output,
+            lambda axes: impulsive_cylinder.plot(axes, args.runs, labels, window=tuple(args.window)),
+            "Impulsively started cylinder (shaded: the compared window)"))
 
 
 if __name__ == "__main__":

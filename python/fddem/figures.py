@@ -38,6 +38,21 @@ def pyplot():
     return plt
 
 
+def save_one_panel(path, draw, title, size=(7, 4.5), grid_which="major"):
+    """One axes drawn by draw(axes), with a legend, a light grid and `title`, saved to `path`
+    (the figure of the tools/compare_*.py scripts); returns the path."""
+    plt = pyplot()
+    fig, axes = plt.subplots(figsize=size)
+    draw(axes)
+    axes.legend(fontsize=8)
+    axes.grid(alpha=0.3, which=grid_which)
+    axes.set_title(title, fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
 def _panel_size(run, width=4.2, widest=10.0, tallest=8.0):
     """(width, height) in inches of a panel showing the box's display plane: `width` wide
     (at most `tallest` high) when the box is taller than wide, else wide enough for a

@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 
 import fddem  # noqa: E402
-from fddem import impulsive_cylinder, io, slices, ten_cate  # noqa: E402
+from fddem import impulsive_cylinder, io, slices, sphere_wall, ten_cate  # noqa: E402
 from synthetic_run import make_run, velocity_field  # noqa: E402
 
 # A figure with a picture in it: pixel values vary. A blank (one-colour) PNG has variance 0;
@@ -370,3 +370,84 @@ class ImpulsiveCylinder(unittest.TestCase):
         self.assertEqual(impulsive_cylinder.nearest_reference_reynolds(3001.0), 3000)
         with self.assertRaises(ValueError):
             impulsive_cylinder.deviation(tau, drag, ref_tau, ref_drag, window=(3.0, 6.0))
+
+
+class SphereWall(unittest.TestCase):
+    """tools/compare_sphere_wall.py: Brenner's (1961) series against its published table, and
+    κ = F/(6πμrU) of a run from particles.csv and case.toml, each force part at its own gap."""
+
+    def test_brenner_series_reproduces_the_tabulated_values(self):
+        # κ at δ/r = 0.4 ... 0.01 as tabulated (400 terms) in A. Ghigo's Basilisk test
+        # sandbox/ghigo/src/test-stokes/sphere-towards-wall.c, quoted in the project's
+        # shared/reference/sphere_wall.md: six significant digits, so 1e-5 relative.
+        table = {0.4: 3.73562, 0.3: 4.61072, 0.2: 6.34089, 0.1: 11.4592, 0.05: 21.5858,
+                 0.025: 41.7176, 0.01: 101.896}
+        for ratio, kappa in table.items():
+            self.assertAlmostEqual(sphere_wall.brenner_kappa(ratio) / kappa, 1.0, delta=1e-5)
+        # Far away, Faxén's 1/κ = 1 − 9/8 (r/h) + 1/2 (r/h)³ (h = r + δ) is within 1e-3 at δ/r
+        # = 10 (its next term is O((r/h)⁴) = 1e-4), and κ → 1.
+        h = 11.0
+        self.assertAlmostEqual(sphere_wall.brenner_kappa(10.0), 1.0 / (1 - 9 / 8 / h + 0.5 / h**3),
+                               delta=1e-3)
+        # Near contact, Cooley & O'Neill's r/δ − ln(δ/r)/5 + 0.97128: the difference is O(δ ln δ).
+        self.assertAlmostEqual(sphere_wall.brenner_kappa(1e-3), sphere_wall.cooley_oneill_kappa(1e-3),
+                               delta=0.01)
+        with self.assertRaises(ValueError):
+            sphere_wall.brenner_kappa(0.0)
+
+    def write_run(self, directory, hydro_scale, lubrication_share):
+        # A sphere r = 0.25 moving at 0.3 toward the x_high wall at x = 4 in μ = 2 (other units
+        # and another axis and direction than the case's), the resolved force a fixed share of
+        # Brenner's at the start-of-step gap, the lubrication the rest at the mid-step gap.
+        radius, speed, mu, dt = 0.25, 0.3, 2.0, 0.002
+        with open(os.path.join(directory, "case.toml"), "w") as f:
+            f.write(f"[domain]\nsize = [4.0, 2.0, 2.0]\n\n[fluid]\nviscosity = {mu}\n\n"
+                    f"[time]\ndt = {dt}\n\n[lubrication]\nenabled = true\n\n"
+                    f"[[bodies]]\ndiameter = {2 * radius}\nvelocity = [{speed}, 0.0, 0.0]\n")
+        drag = 6.0 * np.pi * mu * radius * speed
+        columns = ("time,id,x,y,z,u,v,w,omega_x,omega_y,omega_z,q_w,q_x,q_y,q_z,fx,fy,fz,"
+                   "torque_x,torque_y,torque_z,contact_fx,contact_fy,contact_fz,contact_torque_x,"
+                   "contact_torque_y,contact_torque_z,lubrication_fx,lubrication_fy,"
+                   "lubrication_fz,lubrication_torque_x,lubrication_torque_y,lubrication_torque_z")
+        with open(os.path.join(directory, "particles.csv"), "w") as f:
+            f.write(columns + "\n")
+            for n in range(0, 1240):
+                t = n * dt
+                x = 4.0 - radius - 3.0 * radius + speed * t  # from δ/r = 3
+                gap = 4.0 - radius - x
+                fx = fl = 0.0
+                if n > 0:
+                    fx = -hydro_scale * drag * sphere_wall.brenner_kappa((gap + speed * dt) / radius)
+                    fl = -lubrication_share * drag * sphere_wall.brenner_kappa(
+                        (gap + 0.5 * speed * dt) / radius)
+                row = [t, 0, x, 1, 1, speed] + [0] * 9 + [fx] + [0] * 11 + [fl] + [0] * 5
+                f.write(",".join(str(v) for v in row) + "\n")
+
+    def test_the_exact_force_matches_and_the_parts_are_apart(self):
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_run(directory, 0.8, 0.2)
+            r = sphere_wall.kappa_at(directory)
+            worst = sphere_wall.deviation(r)
+        # The run reaches δ/r = 3 − 1239 · 0.0024 = 0.026: every table gap is covered. Linear
+        # interpolation in ln δ of κ ~ r/δ sampled every 0.0024 r: 3e-4 at δ/r = 0.05.
+        self.assertTrue(np.all(np.isfinite(r["total"])))
+        np.testing.assert_allclose(r["ratio"], 1.0, atol=1e-3)
+        np.testing.assert_allclose(r["hydro_ratio"], 0.8, atol=1e-3)
+        np.testing.assert_allclose(r["lubrication"] / r["brenner"], 0.2, atol=1e-3)
+        self.assertLess(abs(worst["max"]), 1e-3)
+        self.assertEqual(worst["points"], 6)  # δ/r = 2, 1, 0.5, 0.3, 0.2, 0.1
+
+    def test_a_short_run_is_compared_where_it_reaches(self):
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_run(directory, 1.1, 0.0)
+            case = os.path.join(directory, "particles.csv")
+            with open(case) as f:
+                lines = f.readlines()
+            with open(case, "w") as f:
+                f.writelines(lines[:1000])  # to δ/r ≈ 0.6
+            r = sphere_wall.kappa_at(directory)
+            worst = sphere_wall.deviation(r)
+        self.assertTrue(np.all(np.isfinite(r["total"][:2])))
+        self.assertTrue(np.all(np.isnan(r["total"][2:])))
+        self.assertAlmostEqual(worst["max"], 0.1, delta=1e-3)
+        self.assertEqual(worst["points"], 2)

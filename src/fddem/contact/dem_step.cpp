@@ -114,24 +114,20 @@ public:
 
     /// The lubrication impulses over one sub-step `step` at the bodies' current state, applied
     /// pair by pair (in the neighbour list's order) to contact.velocity and contact.omega by a
-    /// backward-Euler damper, and added to the mean force and torque as impulse / `dt`.
+    /// backward-Euler damper, and added to the mean force and torque as impulse / `dt`. A
+    /// prescribed or fixed body keeps its velocity but gets the film's force in its mean and
+    /// lubrication force (what particles.csv reports), as it gets the resolved flow's.
     void lubricate(std::span<Particle<Dim>> bodies, double step, double dt)
     {
         for (const auto& [i, j] : neighbours_.pairs()) {
             const auto a = static_cast<std::size_t>(i);
             const auto b = static_cast<std::size_t>(j);
-            if (!bodies[a].is_free() && !bodies[b].is_free()) {
-                continue;
-            }
             const ContactGeometry<Dim> g =
                 ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]), domain_);
             damp(g, bodies[a], &bodies[b], bodies[b].radius(), step, dt);
         }
         for (const auto& [body, d, side] : neighbours_.walls()) {
             const auto a = static_cast<std::size_t>(body);
-            if (!bodies[a].is_free()) {
-                continue;
-            }
             const ContactGeometry<Dim> g = wall_contact(bodies[a], d, side);
             damp(g, bodies[a], nullptr, std::numeric_limits<double>::infinity(), step, dt);
         }
@@ -233,21 +229,17 @@ private:
         // w = v·n (< 0 approaching) and the slip; the impulses on the second body.
         const double normal_velocity = -g.overlap_rate;
         const Vec<Dim> normal_impulse =
-            (damped_relative_velocity(normal_velocity, c.normal, mass_sum, step) -
-             normal_velocity) /
-            mass_sum * g.normal;
+            damping_impulse(normal_velocity, c.normal, mass_sum, step) * g.normal;
         const Vec<Dim> slip_impulse =
-            (damped_relative_velocity(1.0, c.tangential, mass_sum + turn_sum, step) - 1.0) /
-            (mass_sum + turn_sum) * g.slip_velocity;
+            damping_impulse(1.0, c.tangential, mass_sum + turn_sum, step) * g.slip_velocity;
         const Vec<Dim> on_second = normal_impulse + slip_impulse;
         const auto push = [&](Particle<Dim>& p, const Vec<Dim>& impulse, const Vec<Dim>& lever) {
-            if (!p.is_free()) {
-                return;
-            }
             ContactState<Dim>& s = p.contact;
             const AngularVec<Dim> moment = cross(lever, impulse);
-            s.velocity += impulse / p.mass();
-            s.omega += moment / p.inertia();
+            if (p.is_free()) {
+                s.velocity += impulse / p.mass();
+                s.omega += moment / p.inertia();
+            }
             s.mean_force += impulse / dt;
             s.mean_torque += moment / dt;
             s.lubrication_force += impulse / dt;

@@ -73,4 +73,14 @@ template <int Dim>
     return velocity / (1.0 + resistance * step * inverse_mass);
 }
 
+/// The impulse of that update on the pair's second body along w [N·s]: the change of w over
+/// the inverse mass, −c Δt_i w / (1 + c Δt_i/m*), written so that it holds for bodies of
+/// infinite mass too (inverse_mass = 0: both prescribed, fixed or a wall; then −c w Δt_i, the
+/// force the film exerts at the kept velocity).
+[[nodiscard]] inline double damping_impulse(double velocity, double resistance, double inverse_mass,
+                                            double step)
+{
+    return -resistance * step * velocity / (1.0 + resistance * step * inverse_mass);
+}
+
 } // namespace fddem

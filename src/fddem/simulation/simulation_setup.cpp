@@ -136,12 +136,21 @@ std::optional<ContactSetup<Dim>>
 make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
                    const BoundaryConditions<Dim>& bc, const Particles<Dim>& bodies)
 {
-    if (!bodies.has_free_body()) {
+    // Without a free body nothing can collide; the lubrication still acts on (and is reported
+    // for) prescribed bodies near walls and each other when it is on.
+    if (bodies.empty() || (!bodies.has_free_body() && !config.lubrication.is_enabled)) {
         return std::nullopt;
     }
     const ContactConfig& contact = config.contact;
+    // Without a free body no contact force is ever evaluated (the DEM skips pairs and walls
+    // that cannot move) and the case derived no model: a placeholder stands in, and the
+    // sub-steps are contact.substeps as given (at least 1), over which the lubrication is
+    // averaged.
+    const bool can_collide = bodies.has_free_body();
     std::optional<AnyContactModel> model =
-        make_contact_model(contact.model, contact_model_input(config));
+        can_collide ? make_contact_model(contact.model, contact_model_input(config))
+                    : std::optional<AnyContactModel>(LinearSpringDashpot({1.0, 0.0}, 1.0));
+    const int substeps = can_collide ? contact.derived.substeps : contact.substeps;
     if (!model) {
         return std::nullopt; // contact.model = "none": no collisions
     }
@@ -171,8 +180,7 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
                                           lub.range * grid.spacing().maxCoeff(), lub.roughness};
     const double reach = std::max(contact.margin, lubrication.is_enabled ? lubrication.range : 0.0);
     return ContactSetup<Dim>{DemSettings{std::move(*model), contact.velocity_damping,
-                                         std::max(1, contact.derived.substeps), contact.margin,
-                                         lubrication},
+                                         std::max(1, substeps), contact.margin, lubrication},
                              contact.coupling == ContactCoupling::paper,
                              CellList<Dim>(grid.domain(), largest + reach + 0.5 * smallest), walls};
 }

@@ -278,6 +278,53 @@ TEST(Lubrication, DryAndLubricationForcesAreReportedApart)
     EXPECT_NEAR(spring.z(), dry.mean_force.z(), 0.01 * wet.lubrication_force.z());
 }
 
+TEST(Lubrication, PrescribedBodiesReportTheFilmForce)
+{
+    // A prescribed sphere (a = 1 cm) approaching the floor at 1 mm/s from a gap of 1 mm, range
+    // 2 mm, μ = 1 Pa·s: it keeps its velocity, and its lubrication force is the correction at
+    // the kept velocity, c_corr(h) U, upward, averaged over the 10 sub-steps at the gap each
+    // ends with (the damping acts after the drift).
+    const double a = 0.01;
+    const double speed = 1e-3;
+    const double dt = 1e-3;
+    const auto film = [a, dt](double gap, double closing, double other, const DemSettings& s) {
+        double sum = 0.0;
+        for (int k = 1; k <= s.substeps; ++k) {
+            const double h = gap - closing * dt * k / s.substeps;
+            sum += lubrication_correction<3>(h, a, other, s.lubrication).normal * closing;
+        }
+        return sum / s.substeps;
+    };
+    const DemSettings settings = lubricated(1.0, 0.002, 10);
+    const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
+    std::vector<Particle<3>> bodies{
+        test::ball<3>(Vec<3>(0.05, 0.05, a + 1e-3), Vec<3>(0.0, 0.0, -speed), a, 2000.0)};
+    bodies[0].motion = Motion::prescribed;
+    CellList<3> cells(floor.origin, floor.length, 0.03);
+    ContactHistory<3> history;
+    test::step_dem<3>(bodies, floor, settings, dt, cells, history);
+    const double expected = film(1e-3, speed, wall, settings);
+    EXPECT_GT(expected, 0.0);
+    EXPECT_NEAR(bodies[0].contact.lubrication_force.z(), expected, 1e-12 * expected);
+    EXPECT_EQ(bodies[0].contact.mean_force, bodies[0].contact.lubrication_force); // no dry part
+    EXPECT_EQ(bodies[0].velocity, Vec<3>(0.0, 0.0, -speed));
+
+    // Two prescribed spheres closing head-on at 2 mm/s with a 1 mm gap: equal and opposite
+    // forces c_corr(h) w from the two-sphere resistance.
+    std::vector<Particle<3>> pair{
+        test::ball<3>(Vec<3>(0.04, 0.05, 0.05), Vec<3>(speed, 0.0, 0.0), a, 2000.0),
+        test::ball<3>(Vec<3>(0.061, 0.05, 0.05), Vec<3>(-speed, 0.0, 0.0), a, 2000.0)};
+    for (Particle<3>& b : pair) {
+        b.motion = Motion::prescribed;
+    }
+    const DemWalls<3> open{Vec<3>::Zero(), Vec<3>(0.1, 0.1, 0.1), {false, false, false}};
+    CellList<3> open_cells(open.origin, open.length, 0.03);
+    test::step_dem<3>(pair, open, settings, dt, open_cells, history);
+    const double closing = film(1e-3, 2.0 * speed, a, settings);
+    EXPECT_NEAR(pair[1].contact.lubrication_force.x(), closing, 1e-12 * closing);
+    EXPECT_EQ(pair[0].contact.lubrication_force, Vec<3>(-pair[1].contact.lubrication_force));
+}
+
 TEST(Lubrication, ImplicitDampingIsStableWhenStiff)
 {
     check_stiff_approach<2>();
