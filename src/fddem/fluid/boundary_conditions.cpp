@@ -30,15 +30,15 @@ void check_periodic_axes(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>
     }
 }
 
-/// The boundary faces of `axis` on `side`: the face slab at index 0 or n, transverse extent
-/// the cells.
+/// The boundary faces of `axis` on `side` this process owns: the face slab at index 0 or n,
+/// transverse extent the owned cells; empty on a block that does not reach that side.
 template <int Dim>
 Box<Dim> boundary_faces(const MacGrid<Dim>& grid, int axis, int side)
 {
-    Box<Dim> box = grid.cell_box();
+    Box<Dim> box = grid.owned_cells();
     const auto ax = static_cast<std::size_t>(axis);
     box.lo[ax] = side == 0 ? 0 : grid.cells(axis);
-    box.hi[ax] = box.lo[ax] + 1;
+    box.hi[ax] = grid.touches_side(axis, side) ? box.lo[ax] + 1 : box.lo[ax];
     return box;
 }
 
@@ -48,6 +48,9 @@ template <int Dim>
 void fill_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
                       int side, GridArray<Dim>& ua)
 {
+    if (!grid.touches_side(axis, side)) {
+        return; // an inner block side: its ghosts come from the halo exchange
+    }
     const Box<Dim> storage = grid.storage_box();
     const auto ax = static_cast<std::size_t>(axis);
     const int n = grid.cells(axis);
@@ -78,6 +81,9 @@ template <int Dim>
 void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
                           int side, int component, GridArray<Dim>& ua)
 {
+    if (!grid.touches_side(axis, side)) {
+        return;
+    }
     const Box<Dim> storage = grid.storage_box();
     const auto ax = static_cast<std::size_t>(axis);
     const int n = grid.cells(axis);
@@ -204,6 +210,7 @@ double set_outflow_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<D
                 static_cast<double>(faces.size()) * grid.cell_volume() / grid.spacing(d);
         }
     }
+    outflow_area = grid.communicator().sum(outflow_area);
     // Global mass conservation: one uniform outward correction over all outflow faces. A
     // uniform addition (rather than scaling) also works from a fluid at rest.
     const auto [inflow, outflow] = boundary_fluxes(grid, bc, u);
@@ -236,11 +243,15 @@ void fill_cell_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
         if (bc.periodic(d)) {
             continue;
         }
-        for_each_index(slab(grid, d, storage.lo[ax], 0),
-                       [&](const Index<Dim>& i) { phi(i) = phi(with_axis(i, d, -1 - i[ax])); });
-        for_each_index(slab(grid, d, n, storage.hi[ax]), [&](const Index<Dim>& i) {
-            phi(i) = phi(with_axis(i, d, 2 * n - 1 - i[ax]));
-        });
+        if (grid.touches_side(d, 0)) {
+            for_each_index(slab(grid, d, storage.lo[ax], 0),
+                           [&](const Index<Dim>& i) { phi(i) = phi(with_axis(i, d, -1 - i[ax])); });
+        }
+        if (grid.touches_side(d, 1)) {
+            for_each_index(slab(grid, d, n, storage.hi[ax]), [&](const Index<Dim>& i) {
+                phi(i) = phi(with_axis(i, d, 2 * n - 1 - i[ax]));
+            });
+        }
     }
 }
 

@@ -113,6 +113,13 @@ public:
         }
         return box;
     }
+    /// Whether this process's block reaches side `side` (0 low, 1 high) of `axis`: the ranks
+    /// that apply that side's boundary condition (every rank along an axis not split).
+    [[nodiscard]] bool touches_side(int axis, int side) const noexcept
+    {
+        return side == 0 ? partition_.block.lo[ax(axis)] == 0
+                         : partition_.block.hi[ax(axis)] == cells_[ax(axis)];
+    }
     /// Whether this process owns the cell holding the point x (x inside the domain, wrapped
     /// along periodic axes): the rank that interpolates and spreads a marker there.
     [[nodiscard]] bool owns_point(const Vec<Dim>& x) const noexcept
