@@ -61,8 +61,8 @@ void momentum_assembly(benchmark::State& state)
     CavityFixture f(n);
     for (auto _ : state) {
         for (int a = 0; a < 2; ++a) {
-            benchmark::DoNotOptimize(
-                assemble_momentum(f.grid, f.bc, f.fluid, f.settings, f.dt, f.state, a, f.system));
+            benchmark::DoNotOptimize(assemble_momentum(f.grid, f.bc, f.fluid, f.settings,
+                                                       TimeLevels{f.dt}, f.state, a, f.system));
         }
     }
     per_cell(state, n);
@@ -72,7 +72,8 @@ void momentum_sweep(benchmark::State& state)
 {
     const int n = static_cast<int>(state.range(0));
     CavityFixture f(n);
-    (void)assemble_momentum(f.grid, f.bc, f.fluid, f.settings, f.dt, f.state, 0, f.system);
+    (void)assemble_momentum(f.grid, f.bc, f.fluid, f.settings, TimeLevels{f.dt}, f.state, 0,
+                            f.system);
     for (auto _ : state) {
         solve_momentum(f.grid, f.bc, f.settings, f.system, 0, f.state);
         solve_momentum(f.grid, f.bc, f.settings, f.system, 0, f.state);
@@ -88,7 +89,7 @@ void momentum_vcycle(benchmark::State& state)
     MomentumSettings cycle = f.settings;
     cycle.sweeps = 4;
     cycle.cycles = 1;
-    (void)assemble_momentum(f.grid, f.bc, f.fluid, cycle, f.dt, f.state, 0, f.system);
+    (void)assemble_momentum(f.grid, f.bc, f.fluid, cycle, TimeLevels{f.dt}, f.state, 0, f.system);
     for (auto _ : state) {
         solve_momentum(f.grid, f.bc, cycle, f.system, 0, f.state);
     }

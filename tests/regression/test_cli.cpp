@@ -199,6 +199,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"negative_viscosity", "--set fluid.viscosity=-1",
                "fluid.viscosity: -1 Pa·s is out of range"},
         BadRun{"zero_dt", "--set time.dt=0", "time.dt: 0 s is out of range"},
+        BadRun{"unknown_time_scheme", "--set time.scheme=crank_nicolson",
+               "time.scheme: 'crank_nicolson' is not valid: must be one of: euler, bdf2"},
         BadRun{"bad_solver", "--set simple.pressure_solver=petsc",
                "must be one of: auto, fft, hypre"},
         BadRun{"unwritable_output", "-o /proc/fddem/run", "cannot create the run directory"},

@@ -6,7 +6,8 @@
 // checkpoint is damaged — writes solver.csv (but for its wall_seconds column), particles.csv,
 // every field and particle frame, the line samples and the .pvd collections byte for byte as
 // the uninterrupted run; so does a finished fluid-only run extended to a later end. Bad restart
-// input ends with one message, exit status 2, and changes nothing.
+// input ends with one message, exit status 2, and changes nothing. A BDF2 run continued from a
+// checkpoint is the uninterrupted one as well.
 
 #include <gtest/gtest.h>
 
@@ -151,11 +152,12 @@ protected:
         ADD_FAILURE() << "no " << n << " checkpoints in " << directory;
     }
 
-    /// The uninterrupted run.
-    fs::path reference()
+    /// The uninterrupted run (`overrides`: --set options, each with its leading space).
+    fs::path reference(const std::string& overrides = "")
     {
         const fs::path directory = root_ / "reference";
-        const Result r = run("run " + case_file_.string() + " -o " + directory.string() + " -q");
+        const Result r =
+            run("run " + case_file_.string() + " -o " + directory.string() + " -q" + overrides);
         EXPECT_EQ(r.status, 0) << r.output;
         return directory;
     }
@@ -245,6 +247,21 @@ TEST_F(Restart, ContinuedFromCheckpointsTheRunIsBitIdentical)
             r.output.find("restarting " + copy.string() + " from step " + std::to_string(step)),
             std::string::npos)
             << r.output;
+        expect_same_outputs(ref, copy);
+    }
+}
+
+TEST_F(Restart, ContinuedBdf2RunIsBitIdentical)
+{
+    // time.scheme = "bdf2" reads u^{n−1}, U^{n−1}, ω^{n−1} and the last Δt besides the level-n
+    // state: the checkpoint must carry them (format version 6). Step 1 is Euler, so step 5
+    // (before any contact) and step 10 (a contact in flight) both continue BDF2 steps.
+    const fs::path ref = reference(" --set time.scheme=bdf2");
+    ASSERT_NE(file_contents(ref / "case.toml").find("scheme = 'bdf2'"), std::string::npos);
+    for (const long step : {5L, 10L}) {
+        const fs::path copy = copy_stopped_at(ref, step, "bdf2_stopped_at_" + std::to_string(step));
+        const Result r = run("run --restart " + copy.string() + " -q");
+        ASSERT_EQ(r.status, 0) << r.output;
         expect_same_outputs(ref, copy);
     }
 }

@@ -82,6 +82,8 @@ struct Particle {
     AngularVec<Dim> torque = zero_angular<Dim>();  ///< hydrodynamic torque of the last step [N·m]
     Vec<Dim> velocity_n = Vec<Dim>::Zero();        ///< U^n, the level the step started from
     AngularVec<Dim> omega_n = zero_angular<Dim>(); ///< ω^n
+    Vec<Dim> velocity_nm1 = Vec<Dim>::Zero();      ///< U^{n−1} (time.scheme = "bdf2")
+    AngularVec<Dim> omega_nm1 = zero_angular<Dim>(); ///< ω^{n−1}
 
     MarkerCoupling<Dim> coupling;
     ContactState<Dim> contact;

@@ -4,9 +4,11 @@
 namespace fddem {
 
 template <int Dim>
-void measure_hydrodynamic_forces(std::span<Particle<Dim>> bodies, double fluid_density, double dt)
+void measure_hydrodynamic_forces(std::span<Particle<Dim>> bodies, double fluid_density,
+                                 const TimeLevels& levels)
 {
     const double rho = fluid_density;
+    const double dt = levels.dt_effective;
     for (Particle<Dim>& body : bodies) {
         const MarkerCoupling<Dim>& c = body.coupling;
         Vec<Dim> lambda_sum = Vec<Dim>::Zero();
@@ -15,14 +17,15 @@ void measure_hydrodynamic_forces(std::span<Particle<Dim>> bodies, double fluid_d
             lambda_sum += c.markers.volumes[l] * c.lambda[l];
             lambda_moment += c.markers.volumes[l] * cross(c.offsets[l], c.lambda[l]);
         }
-        body.force =
-            rho * body.volume() * (body.velocity - body.velocity_n) / dt - rho * lambda_sum;
+        const Vec<Dim> velocity_n = levels.history(body.velocity_n, body.velocity_nm1);
+        const AngularVec<Dim> omega_n = levels.history(body.omega_n, body.omega_nm1);
+        body.force = rho * body.volume() * (body.velocity - velocity_n) / dt - rho * lambda_sum;
         body.torque =
-            rho * c.fluid_second_moment * (body.omega - body.omega_n) / dt - rho * lambda_moment;
+            rho * c.fluid_second_moment * (body.omega - omega_n) / dt - rho * lambda_moment;
     }
 }
 
-template void measure_hydrodynamic_forces<2>(std::span<Particle<2>>, double, double);
-template void measure_hydrodynamic_forces<3>(std::span<Particle<3>>, double, double);
+template void measure_hydrodynamic_forces<2>(std::span<Particle<2>>, double, const TimeLevels&);
+template void measure_hydrodynamic_forces<3>(std::span<Particle<3>>, double, const TimeLevels&);
 
 } // namespace fddem

@@ -3,17 +3,21 @@
 /// The force and torque the fluid exerts on a body over the step, from the fluid's momentum
 /// balance over the body (the paper's eqs. (5a)–(5b) with λ the force density, as
 /// rigid_coupling.hpp writes them): F_H = ρf V (U^{n+1} − U^n)/Δt − ρf Σ ΔV_l λ_l and T_H = ρf Σ
-/// ΔV_l |r⊥|² (ω^{n+1} − ω^n)/Δt − ρf Σ ΔV_l r_l × λ_l. For output and diagnostics.
+/// ΔV_l |r⊥|² (ω^{n+1} − ω^n)/Δt − ρf Σ ΔV_l r_l × λ_l. For output and diagnostics. With
+/// time.scheme = "bdf2", Δt is Δt_e and U^n, ω^n are Ũ^n, ω̃^n (core/time_scheme.hpp), as in
+/// eqs. (13)–(14).
 
 #include "fddem/bodies/particle.hpp"
+#include "fddem/core/time_scheme.hpp"
 
 #include <span>
 
 namespace fddem {
 
 /// Sets force and torque of every body from its λ and its velocity change over the step of
-/// `dt` [s]; `fluid_density` ρf [kg/m³].
+/// `levels` (Δt_e [s], and Ũ^n with BDF2); `fluid_density` ρf [kg/m³].
 template <int Dim>
-void measure_hydrodynamic_forces(std::span<Particle<Dim>> bodies, double fluid_density, double dt);
+void measure_hydrodynamic_forces(std::span<Particle<Dim>> bodies, double fluid_density,
+                                 const TimeLevels& levels);
 
 } // namespace fddem

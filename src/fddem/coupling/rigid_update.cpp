@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/coupling/rigid_update.hpp"
 
+#include "fddem/core/time_scheme.hpp"
 #include "fddem/coupling/rigid_coupling.hpp"
 #include "fddem/coupling/transfer.hpp"
 #include "fddem/grid/halo_exchange.hpp"
@@ -24,8 +25,10 @@ RigidVelocity<Dim> new_motion(const Particle<Dim>& body, const RigidUpdateSettin
         // body moves as the sub-steps say; the fluid is made to follow.
         return {body.contact.velocity, body.contact.omega};
     }
-    const RigidUpdateInput<Dim> in{body.velocity_n,
-                                   body.omega_n,
+    // Ũ^n, ω̃^n: U^n, ω^n themselves with Euler (w = 0).
+    const TimeLevels levels{s.dt, s.history_weight};
+    const RigidUpdateInput<Dim> in{levels.history(body.velocity_n, body.velocity_nm1),
+                                   levels.history(body.omega_n, body.omega_nm1),
                                    body.density,
                                    body.volume(),
                                    body.inertia_tensor(),

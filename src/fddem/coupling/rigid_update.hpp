@@ -6,6 +6,19 @@
 ///   eq. (15): λ = λ* + (U + ω × r − u_l)/Δt;
 ///   eq. (16): u ← u + Δt D(λ − λ*), then λ* ← λ.
 /// The per-body formulas are in rigid_coupling.hpp; this file applies them to the grid.
+///
+/// With time.scheme = "bdf2" every Δt here is Δt_e and every level-n body velocity the
+/// extrapolated Ũ^n, ω̃^n of core/time_scheme.hpp, the same as in the momentum equations:
+/// - eqs. (15)–(16): the momentum equation answers a change δλ of the force with
+///   δu = Δt_e δλ (its time coefficient in a_P is ρf ΔV/Δt_e), so eq. (15) divides the slip by
+///   Δt_e and eq. (16) adds Δt_e D(λ − λ*). With Euler's Δt there, the next momentum solve
+///   would move the fluid inside the body only 2/3 of the way to rigid motion (constant step)
+///   while eq. (16) had moved it all the way: the body would be rigid only once the outer
+///   iterations converge, which the step's test (on the bodies' change) does not require.
+/// - eqs. (13)–(14) are the fluid's BDF2 momentum balance integrated over the body plus the
+///   body's own BDF2 equation of motion, ρs V (U^{n+1} − Ũ^n)/Δt_e = F_H + (ρs − ρf) V g:
+///   the same formulas with (Δt, U^n) → (Δt_e, Ũ^n), so free bodies are second order too
+///   (docs/method.md §4, "Second-order time stepping").
 
 #include "fddem/bodies/particle.hpp"
 #include "fddem/coupling/delta_kernel.hpp"
@@ -19,8 +32,11 @@ template <int Dim>
 struct RigidUpdateSettings {
     double fluid_density;  ///< ρf [kg/m³]
     Vec<Dim> gravity;      ///< g [m/s²]
-    double dt;             ///< Δt [s]
+    double dt;             ///< Δt_e [s] (core/time_scheme.hpp): Δt with implicit Euler
     bool is_paper_contact; ///< contact.coupling = "paper": a body in contact moves as DEM says
+    /// w of core/time_scheme.hpp: the level-n motion of eqs. (13)–(14) is
+    /// Ũ^n = U^n + w (U^n − U^{n−1}) (likewise ω); 0 for implicit Euler
+    double history_weight = 0.0;
 };
 
 /// Eqs. (13)–(16) for every body, in the order of the store; `u` needs its ghosts filled.

@@ -20,11 +20,12 @@ enum class ConvectionScheme { central, upwind };
 template <int Dim>
 struct FluidState {
     explicit FluidState(const MacGrid<Dim>& grid)
-        : u(grid), u_n(grid), p(grid), p_corr(grid), body_force(grid), divergence(grid)
+        : u(grid), u_n(grid), u_nm1(grid), p(grid), p_corr(grid), body_force(grid), divergence(grid)
     {
     }
     FaceField<Dim> u;          ///< latest outer iterate of the velocity [m/s]
     FaceField<Dim> u_n;        ///< velocity at time level n [m/s]
+    FaceField<Dim> u_nm1;      ///< velocity at time level n−1 [m/s] (BDF2; a reused assembly)
     CellField<Dim> p;          ///< pressure p* / p [Pa]
     CellField<Dim> p_corr;     ///< pressure correction p′ [Pa]
     FaceField<Dim> body_force; ///< force on the fluid per unit volume, incl. ρf λ* [N/m³]

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Momentum equations (7)–(8), dimensional form, implicit Euler:
-//   ρf ΔV (u_P − u_P^n)/Δt + Σ_faces F u_face = Σ_faces μ A ∂u/∂n − (p_P − p_W) ΔV/h + f ΔV,
+// Momentum equations (7)–(8), dimensional form, implicit Euler (or BDF2, time.scheme):
+//   ρf ΔV (u_P − ũ_P^n)/Δt_e + Σ_faces F u_face = Σ_faces μ A ∂u/∂n − (p_P − p_W) ΔV/h + f ΔV,
+// with Δt_e = Δt and ũ^n = u^n for Euler, and BDF2's leading coefficient folded into Δt_e and
+// its u^{n−1} into ũ^n (core/time_scheme.hpp),
 // where F = ρf A u_n is the mass flux through a face of the velocity control volume (taken
 // from the latest outer iterate: Picard linearisation) and f the force per unit volume on the
 // fluid (ρf λ* from the particles, plus any uniform body force). In Patankar's form:
 //   a_P u_P = Σ a_nb u_nb − (p_P − p_W) ΔV/h + b,
-//   a_nb = D + max(∓F, 0),  a_P = Σ a_nb + ρf ΔV/Δt + ΔF,  D = μ A/h,
+//   a_nb = D + max(∓F, 0),  a_P = Σ a_nb + ρf ΔV/Δt_e + ΔF,  D = μ A/h,
 // with the convection upwinded implicitly and corrected to central differences in b from the
 // latest iterate (deferred correction), so that the converged answer is second order.
 // Walls and inflows: the normal velocity on a boundary face is known (it enters as a fixed
@@ -32,16 +34,20 @@ namespace {
 /// it resolve at compile time and the row loop can vectorise.
 template <int Dim, int axis>
 double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                          const FluidProperties& fluid, const MomentumSettings& settings, double dt,
-                          const FluidState<Dim>& state, MomentumSystem<Dim>& system)
+                          const FluidProperties& fluid, const MomentumSettings& settings,
+                          const TimeLevels& time, const FluidState<Dim>& state,
+                          MomentumSystem<Dim>& system)
 {
     const Box<Dim> box = unknown_faces(grid, bc, axis);
     const double volume = grid.cell_volume();
     const double rho = fluid.density;
-    const double a_time = rho * volume / dt;
+    const double a_time = rho * volume / time.dt_effective;
     const double gamma = settings.convection == ConvectionScheme::central ? 1.0 : 0.0;
     const double* ua = state.u[axis].data();
     const double* ua_n = state.u_n[axis].data();
+    // BDF2's u^{n−1}; none for Euler, whose ũ^n is u^n itself (bit for bit as before).
+    const double* ua_nm1 = time.has_history() ? state.u_nm1[axis].data() : nullptr;
+    const double history_weight = time.history_weight;
     const double* force = state.body_force[axis].data();
     const double* p = state.p.data();
     const std::ptrdiff_t s_axis = grid.stride(axis);
@@ -106,7 +112,9 @@ double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
     // `has_sides` false the boundary treatment is compiled out (a face with no side kinds).
     const auto assemble_face = [&](std::ptrdiff_t o, const SideKinds& k, auto has_sides) {
         double a_p = a_time;
-        double b = a_time * ua_n[o] + force[o] * volume;
+        const double level =
+            ua_nm1 == nullptr ? ua_n[o] : ua_n[o] + history_weight * (ua_n[o] - ua_nm1[o]);
+        double b = a_time * level + force[o] * volume;
         double neighbours = 0.0; // Σ a_nb u_nb, for the residual
         for (int d = 0; d < Dim; ++d) {
             const auto sd = static_cast<std::size_t>(d);
@@ -221,18 +229,19 @@ double assemble_component(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
 
 template <int Dim>
 double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                         const FluidProperties& fluid, const MomentumSettings& settings, double dt,
-                         const FluidState<Dim>& state, int axis, MomentumSystem<Dim>& system)
+                         const FluidProperties& fluid, const MomentumSettings& settings,
+                         const TimeLevels& time, const FluidState<Dim>& state, int axis,
+                         MomentumSystem<Dim>& system)
 {
     if (axis == 0) {
-        return assemble_component<Dim, 0>(grid, bc, fluid, settings, dt, state, system);
+        return assemble_component<Dim, 0>(grid, bc, fluid, settings, time, state, system);
     }
     if constexpr (Dim == 3) {
         if (axis == 2) {
-            return assemble_component<Dim, 2>(grid, bc, fluid, settings, dt, state, system);
+            return assemble_component<Dim, 2>(grid, bc, fluid, settings, time, state, system);
         }
     }
-    return assemble_component<Dim, 1>(grid, bc, fluid, settings, dt, state, system);
+    return assemble_component<Dim, 1>(grid, bc, fluid, settings, time, state, system);
 }
 
 namespace {
@@ -481,11 +490,13 @@ int momentum_cycles_for(MomentumSolver solver, int cycles, double time_share)
 template double time_term_share<2>(const MacGrid<2>&, const FluidProperties&, double);
 template double time_term_share<3>(const MacGrid<3>&, const FluidProperties&, double);
 template double assemble_momentum<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
-                                     const FluidProperties&, const MomentumSettings&, double,
-                                     const FluidState<2>&, int, MomentumSystem<2>&);
+                                     const FluidProperties&, const MomentumSettings&,
+                                     const TimeLevels&, const FluidState<2>&, int,
+                                     MomentumSystem<2>&);
 template double assemble_momentum<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
-                                     const FluidProperties&, const MomentumSettings&, double,
-                                     const FluidState<3>&, int, MomentumSystem<3>&);
+                                     const FluidProperties&, const MomentumSettings&,
+                                     const TimeLevels&, const FluidState<3>&, int,
+                                     MomentumSystem<3>&);
 template void solve_momentum<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
                                 const MomentumSettings&, MomentumSystem<2>&, int, FluidState<2>&);
 template void solve_momentum<3>(const MacGrid<3>&, const BoundaryConditions<3>&,

@@ -3,6 +3,7 @@
 /// The discrete momentum equations (7)–(8) on the staggered grid, one system per velocity
 /// component: a_P u_P = Σ a_nb u_nb − (p_P − p_W) ΔV/h + b, and their approximate solution.
 
+#include "fddem/core/time_scheme.hpp"
 #include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/fluid/fluid_state.hpp"
 #include "fddem/linsolve/aggregation_multigrid.hpp"
@@ -67,14 +68,16 @@ enum class MomentumSolver { automatic, multigrid, gauss_seidel };
 [[nodiscard]] int momentum_cycles_for(MomentumSolver solver, int cycles, double time_share);
 
 /// Assembles eqs. (7)–(8) for component `axis` about the current iterate `state.u` (Picard:
-/// fluxes from the latest iterate), implicit Euler in time. Requires the ghosts of state.u
-/// filled. `dt` is Δt [s]. Returns the normalised residual of the current iterate,
+/// fluxes from the latest iterate). The time term is ρf ΔV (u − ũ^n)/Δt_e of `time`
+/// (core/time_scheme.hpp): implicit Euler, or BDF2 from state.u_n and state.u_nm1. Requires
+/// the ghosts of state.u filled. Returns the normalised residual of the current iterate,
 /// max |r / a_P| [m/s].
 template <int Dim>
-[[nodiscard]] double
-assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                  const FluidProperties& fluid, const MomentumSettings& settings, double dt,
-                  const FluidState<Dim>& state, int axis, MomentumSystem<Dim>& system);
+[[nodiscard]] double assemble_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                                       const FluidProperties& fluid,
+                                       const MomentumSettings& settings, const TimeLevels& time,
+                                       const FluidState<Dim>& state, int axis,
+                                       MomentumSystem<Dim>& system);
 
 /// Relaxes component `axis` of state.u towards the solution of its system, with velocity
 /// under-relaxation (Patankar's a_P/α form): settings.cycles multigrid V-cycles smoothed by

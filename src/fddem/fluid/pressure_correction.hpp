@@ -21,7 +21,9 @@ double compute_divergence(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
 
 /// eqs. (9)–(12): sets the outflow faces from u* (set_outflow_velocity), solves
 /// ∇²p′ = (ρf/Δt) ∇·u* and corrects u = u* − (Δt/ρf) ∇p′ on every unknown face,
-/// p = p* + α_p p′. Returns max |∇·u*| before the correction [1/s].
+/// p = p* + α_p p′. Returns max |∇·u*| before the correction [1/s]. `dt` is the Δt_e of
+/// core/time_scheme.hpp: the step over the time term's coefficient in a_P, Δt for implicit
+/// Euler, 2Δt/3 for BDF2 at a constant step.
 ///
 /// With PressureUpdate::rotational the pressure also takes −α_p μ ∇·u* (the rotational form
 /// of the pressure-correction update; Timmermans, Minev & van de Vosse, Int. J. Numer. Meth.

@@ -79,6 +79,11 @@ constexpr auto case_names(KernelKind /*tag*/)
     return std::to_array<EnumName<KernelKind>>(
         {{hat, "hat"}, {roma3, "roma3"}, {peskin4, "peskin4"}});
 }
+constexpr auto case_names(TimeScheme /*tag*/)
+{
+    using enum TimeScheme;
+    return std::to_array<EnumName<TimeScheme>>({{euler, "euler"}, {bdf2, "bdf2"}});
+}
 constexpr auto case_names(MarkerLayout /*tag*/)
 {
     using enum MarkerLayout;

@@ -279,6 +279,13 @@ std::vector<KeySpec> case_schema()
                           "most 2× per step and within time.max_courant if given. Intermediate "
                           "states are not time-accurate."),
                       &CaseConfig::time, &TimeConfig::is_steady));
+    s.push_back(bound(key("time", "scheme", T::string, none, "\"euler\"",
+                          "Time derivative of the momentum equations and of the bodies' "
+                          "eqs. (13)–(14): euler (implicit Euler, first order, the paper's) or "
+                          "bdf2 (second-order backward differences, with the variable-step "
+                          "coefficients when Δt changes; the first step is Euler; "
+                          "docs/method.md §4)."),
+                      &CaseConfig::time, &TimeConfig::scheme));
 
     s.push_back(bound(ranged(key("simple", "tolerance", T::real, none, "1e-5",
                                  "SIMPLE convergence: normalised mass and momentum residuals below "

@@ -65,7 +65,7 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
                                                                  config.simple.velocity_relaxation,
                                                                  config.simple.momentum_sweeps,
                                                                  config.simple.momentum_cycles},
-      gravity_(gravity), is_paper_contact_(is_paper_contact),
+      gravity_(gravity), is_paper_contact_(is_paper_contact), scheme_(config.time.scheme),
       poisson_(make_poisson_solver<Dim>(
           grid, bc.is_periodic,
           PoissonSettings{config.simple.pressure_solver, config.simple.linear_tolerance,
@@ -113,7 +113,8 @@ void OuterIterations<Dim>::iterate(const StepInputs<Dim>& in, FluidState<Dim>& s
         check_finite(k, in, state, report);
         if (k > 1 && is_step_converged(has_bodies, report)) {
             report.is_converged = true;
-            is_reusable_assembly_ = !has_bodies; // the next step starts from this assembly
+            // The next step starts from this assembly (Euler: see is_reusable_assembly()).
+            is_reusable_assembly_ = !has_bodies && scheme_ == TimeScheme::euler;
             break;
         }
         solve_momentum_systems(state, times); // eqs. (7)–(8) relaxed → u*
@@ -121,7 +122,8 @@ void OuterIterations<Dim>::iterate(const StepInputs<Dim>& in, FluidState<Dim>& s
             const ScopedPhase timer(times, Phase::coupling); // eqs. (13)–(16) on u*
             couple_bodies(k, velocity_scale, in, state, bodies, report);
         }
-        mass_residual = correct_pressure(in.dt, velocity_scale, state, times); // eqs. (9)–(12)
+        // eqs. (9)–(12), with d = Δt_e/ρf: the time term's coefficient in a_P (BDF2's leading one)
+        mass_residual = correct_pressure(in.levels.dt_effective, velocity_scale, state, times);
         if (has_bodies && !is_forcing_before_projection_) {
             const ScopedPhase timer(times, Phase::coupling); // eqs. (13)–(16)
             couple_bodies(k, velocity_scale, in, state, bodies, report);
@@ -172,7 +174,7 @@ double OuterIterations<Dim>::assemble(int k, const StepInputs<Dim>& in,
         for (int a = 0; a < Dim; ++a) {
             GridArray<Dim>& b = systems_[static_cast<std::size_t>(a)].b;
             const GridArray<Dim>& now = state.u_n[a];
-            const GridArray<Dim>& before = in.previous_level[a];
+            const GridArray<Dim>& before = state.u_nm1[a];
             for_each_index(unknown_faces(grid_, bc_, a), [&](const Index<Dim>& c) {
                 const std::ptrdiff_t o = grid_.offset(c);
                 b[o] += a_time * (now[o] - before[o]);
@@ -181,8 +183,8 @@ double OuterIterations<Dim>::assemble(int k, const StepInputs<Dim>& in,
     } else {
         for (int a = 0; a < Dim; ++a) {
             residual = std::max(residual,
-                                assemble_momentum(grid_, bc_, properties_, momentum_, in.dt, state,
-                                                  a, systems_[static_cast<std::size_t>(a)]));
+                                assemble_momentum(grid_, bc_, properties_, momentum_, in.levels,
+                                                  state, a, systems_[static_cast<std::size_t>(a)]));
         }
     }
     is_reusable_assembly_ = false;
@@ -222,7 +224,8 @@ void OuterIterations<Dim>::couple_bodies(int k, double velocity_scale, const Ste
     }
     const double defect = update_rigid_bodies<Dim>(
         bodies.all(), grid_, kernel_,
-        RigidUpdateSettings<Dim>{properties_.density, gravity_, in.dt, is_paper_contact_},
+        RigidUpdateSettings<Dim>{properties_.density, gravity_, in.levels.dt_effective,
+                                 is_paper_contact_, in.levels.history_weight},
         state.u); // eqs. (13)–(16)
     if (scale <= std::numeric_limits<double>::min()) {
         // Fluid and bodies at rest until this update (the first iteration of a run from rest):

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-/// The SIMPLE outer iterations of one implicit-Euler time step (paper §2.2–2.3), as one unit:
+/// The SIMPLE outer iterations of one implicit-Euler (or BDF2) time step (paper §2.2–2.3), as
+/// one unit:
 ///
 ///   repeat, k = 1, 2, …:
 ///     eqs. (7)–(8)   momentum coefficients about the latest iterate; stop if converged;
@@ -37,11 +38,11 @@ namespace fddem {
 /// What a step gives the iterations besides the fluid and the bodies.
 template <int Dim>
 struct StepInputs {
-    double dt;                            ///< Δt [s]
-    const Vec<Dim>& uniform_force;        ///< on the fluid [N/m³]
-    const FaceField<Dim>& previous_level; ///< u^{n−1}, to move a reused assembly's b to level n
-    long step;                            ///< the step being taken (for messages)
-    double time;                          ///< its end time [s] (for messages)
+    double dt;                     ///< Δt [s]
+    TimeLevels levels;             ///< the time derivative's Δt_e and ũ^n (time.scheme)
+    const Vec<Dim>& uniform_force; ///< on the fluid [N/m³]
+    long step;                     ///< the step being taken (for messages)
+    double time;                   ///< its end time [s] (for messages)
 };
 
 template <int Dim>
@@ -73,6 +74,7 @@ public:
     }
     /// True if the systems were assembled about the current iterate with the same Δt and forcing
     /// (by the convergence test that ended the last step), so the next step may reuse them.
+    /// Never with BDF2, whose b would need u^{n−2} to be moved to the new level.
     [[nodiscard]] bool& is_reusable_assembly() noexcept { return is_reusable_assembly_; }
     [[nodiscard]] const bool& is_reusable_assembly() const noexcept
     {
@@ -120,6 +122,7 @@ private:
     MomentumSettings momentum_;
     Vec<Dim> gravity_;
     bool is_paper_contact_;
+    TimeScheme scheme_; ///< time.scheme
     double dt_ = 0.0;
 
     std::vector<MomentumSystem<Dim>> systems_;

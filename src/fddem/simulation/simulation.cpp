@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The time step (DESIGN.md §1, STYLE.md §2): implicit Euler; the DEM sub-steps of eq. (18),
+// The time step (DESIGN.md §1, STYLE.md §2): implicit Euler (or BDF2, time.scheme; the step's
+// Δt_e and ũ^n from core/time_scheme.hpp); the DEM sub-steps of eq. (18),
 // SIMPLE outer iterations for eqs. (7)–(16) (outer_iterations.hpp), and the move of eq. (17).
 
 #include "fddem/simulation/simulation.hpp"
@@ -21,7 +22,7 @@ Simulation<Dim>::Simulation(const CaseConfig& config)
     : config_(config), grid_(make_grid<Dim>(config)),
       bc_(make_boundary_conditions<Dim>(config)), properties_{config.fluid.density,
                                                               config.fluid.viscosity},
-      state_(grid_), previous_level_(grid_),
+      state_(grid_),
       length_scale_(*std::min_element(config.domain.size.begin(), config.domain.size.end())),
       bodies_(make_particles<Dim>(config, grid_)), kernel_(make_kernel(config.coupling.kernel)),
       gravity_(vector_of<Dim>(config.fluid.gravity)),
@@ -114,20 +115,21 @@ StepReport Simulation<Dim>::advance_unguarded()
     if (config_.time.max_courant || config_.time.is_steady) {
         choose_time_step();
     }
-    begin_step(); // u^n, U^n, ω^n kept; λ* = λ^n already
+    begin_step(); // u^n, U^n, ω^n kept (and u^{n−1}, …); λ* = λ^n already
+    const TimeLevels levels = time_levels(config_.time.scheme, clock_.dt, clock_.previous_dt);
     if (contacts_) {
         const ScopedPhase timer(times_, Phase::contact);
         resolve_contacts(report); // eq. (18), over the whole step before the fluid (§2.3)
     }
     // eqs. (7)–(16): momentum, pressure correction, rigid bodies, marker forces, spreading.
-    outer_.iterate(
-        {clock_.dt, uniform_force_, previous_level_, clock_.step + 1, clock_.time + clock_.dt},
-        state_, bodies_, times_, report);
+    outer_.iterate({clock_.dt, levels, uniform_force_, clock_.step + 1, clock_.time + clock_.dt},
+                   state_, bodies_, times_, report);
     measure_step(report);
     if (!bodies_.empty()) {
-        move_bodies_and_markers(); // eq. (17)
+        move_bodies_and_markers(levels); // eq. (17)
     }
     clock_.time += clock_.dt;
+    clock_.previous_dt = clock_.dt;
     ++clock_.step;
     step_history_.push(report.rate_of_change, report.is_converged);
     track_rest();
@@ -138,10 +140,12 @@ template <int Dim>
 void Simulation<Dim>::begin_step()
 {
     for (int a = 0; a < Dim; ++a) {
-        previous_level_[a] = state_.u_n[a];
+        state_.u_nm1[a] = state_.u_n[a];
         state_.u_n[a] = state_.u[a];
     }
     for (Particle<Dim>& body : bodies_) {
+        body.velocity_nm1 = body.velocity_n;
+        body.omega_nm1 = body.omega_n;
         body.velocity_n = body.velocity;
         body.omega_n = body.omega;
     }
@@ -181,10 +185,10 @@ void Simulation<Dim>::measure_step(StepReport& report) const
 }
 
 template <int Dim>
-void Simulation<Dim>::move_bodies_and_markers()
+void Simulation<Dim>::move_bodies_and_markers(const TimeLevels& levels)
 {
     const double dt = clock_.dt;
-    measure_hydrodynamic_forces<Dim>(bodies_.all(), properties_.density, dt);
+    measure_hydrodynamic_forces<Dim>(bodies_.all(), properties_.density, levels);
     move_bodies<Dim>(bodies_.all(), dt, contacts_ && contacts_->is_paper_coupling); // eq. (17)
     wrap_centres<Dim>(bodies_.all(), grid_.domain()); // re-entering across periodic sides
     place_markers<Dim>(bodies_.all(), grid_, kernel_, clock_.step + 1, clock_.time + dt);
@@ -214,8 +218,8 @@ template <int Dim>
 void Simulation<Dim>::roll_back_step()
 {
     for (int a = 0; a < Dim; ++a) {
-        state_.u[a] = state_.u_n[a];        // advance() moved u^n here
-        state_.u_n[a] = previous_level_[a]; // and u^{n−1} here
+        state_.u[a] = state_.u_n[a];     // advance() moved u^n here
+        state_.u_n[a] = state_.u_nm1[a]; // and u^{n−1} here
     }
     state_.p = step_start_.p;
     state_.p_corr.fill(0.0); // only hypre's initial guess

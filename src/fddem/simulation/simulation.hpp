@@ -23,7 +23,8 @@ namespace fddem {
 struct Clock {
     double time = 0.0; ///< [s]
     long step = 0;
-    double dt = 0.0; ///< [s]
+    double dt = 0.0;          ///< [s]
+    double previous_dt = 0.0; ///< Δt of the last step taken [s]; 0 before the first (BDF2's ω)
 };
 
 /// The contacts of a run with free bodies and a contact model (eq. (18)).
@@ -47,8 +48,8 @@ public:
     Simulation& operator=(Simulation&&) = delete;
     ~Simulation() = default;
 
-    /// One implicit-Euler time step: DEM sub-steps (18), SIMPLE outer iterations (7)–(16) to
-    /// convergence, the move (17). Throws NumericalError if the step blows up (a non-finite
+    /// One implicit-Euler (or BDF2) time step: DEM sub-steps (18), SIMPLE outer iterations (7)–(16)
+    /// to convergence, the move (17). Throws NumericalError if the step blows up (a non-finite
     /// residual, a body leaving the box); the simulation is then back in the state it had before
     /// the step, exactly, so that it can be checkpointed and continued (with a smaller Δt, say).
     StepReport advance();
@@ -138,13 +139,14 @@ private:
         archive("clock.step", self.clock_.step);
         archive("clock.time", self.clock_.time);
         archive("clock.dt", self.clock_.dt);
+        archive("clock.previous_dt", self.clock_.previous_dt);
         archive("fluid.u", self.state_.u);
         archive("fluid.u_n", self.state_.u_n);
         archive("fluid.p", self.state_.p);
         archive("fluid.p_corr", self.state_.p_corr); // hypre's initial guess (warm start)
         archive("fluid.body_force", self.state_.body_force);
         archive("fluid.divergence", self.state_.divergence);
-        archive("fluid.previous_level", self.previous_level_);
+        archive("fluid.previous_level", self.state_.u_nm1);
         archive("uniform_force", self.uniform_force_);
         auto& outer = self.outer_;
         archive("is_reusable_assembly", outer.is_reusable_assembly());
@@ -176,6 +178,8 @@ private:
             archive("coupling.lambda_star", c.lambda_star);
             archive("coupling.velocity_n", body.velocity_n);
             archive("coupling.omega_n", body.omega_n);
+            archive("coupling.velocity_nm1", body.velocity_nm1);
+            archive("coupling.omega_nm1", body.omega_nm1);
             auto& dem = body.contact;
             archive("contact.force", dem.mean_force);
             archive("contact.torque", dem.mean_torque);
@@ -210,7 +214,8 @@ private:
     StepReport advance_unguarded();
     /// Δt of the next step by time.max_courant or time.steady (time_step_control.hpp).
     void choose_time_step();
-    /// Keeps the level-n state: u^{n−1} ← u^n ← u, U^n ← U, ω^n ← ω (λ* = λ^n already).
+    /// Keeps the level-n state: u^{n−1} ← u^n ← u, U^{n−1} ← U^n ← U, ω^{n−1} ← ω^n ← ω
+    /// (λ* = λ^n already).
     void begin_step();
     /// eq. (18): the DEM sub-steps over the whole step, from the level-n state, with the
     /// buoyant weight held over them.
@@ -219,12 +224,13 @@ private:
     void measure_step(StepReport& report) const;
     /// eq. (17) and what follows from it: hydrodynamic forces for output, the bodies moved,
     /// their markers placed and the body force spread for the next step.
-    void move_bodies_and_markers();
+    void move_bodies_and_markers(const TimeLevels& levels);
     /// Tracks rest_since_ after a step (time.rest_speed).
     void track_rest();
 
     /// Undoes a step that threw: the state of the step's start (except per-step scratch and
-    /// u^{n−2}, which only a reused assembly needs; the next step reassembles).
+    /// u^{n−2}, which only a reused assembly needs; the next step reassembles, and its
+    /// begin_step() sets u^{n−1} again from u^n).
     void roll_back_step();
 
     CaseConfig config_;
@@ -232,7 +238,6 @@ private:
     BoundaryConditions<Dim> bc_;
     FluidProperties properties_;
     FluidState<Dim> state_;
-    FaceField<Dim> previous_level_; ///< u^{n−1}, to move the assembled b to the new level
     Clock clock_;
     double length_scale_; ///< smallest box side [m], for the steady-state measure
     Particles<Dim> bodies_;
@@ -250,7 +255,7 @@ private:
     double rest_since_ = -1.0; ///< see at_rest_since() [s]; negative: some body is moving
 
     /// What a failed step must be able to give back (roll_back_step). u^n and u^{n−1} are
-    /// not here: the step keeps them in state_.u_n and previous_level_ anyway.
+    /// not here: the step keeps them in state_.u_n and state_.u_nm1 anyway.
     struct StepStart {
         GridArray<Dim> p;
         Particles<Dim> bodies;

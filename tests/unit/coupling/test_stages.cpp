@@ -175,7 +175,7 @@ TEST(HydrodynamicForce, IsTheMomentumBalanceOfTheMarkers)
     for (Vec<2>& lambda : bodies[0].coupling.lambda) {
         lambda = Vec<2>(0.0, 3.0);
     }
-    measure_hydrodynamic_forces<2>(bodies, 2.0, 0.01);
+    measure_hydrodynamic_forces<2>(bodies, 2.0, TimeLevels{0.01});
     const double volume = bodies[0].volume();
     EXPECT_NEAR(bodies[0].force.y(), -2.0 * volume * 3.0, 1e-12);
     EXPECT_NEAR(bodies[0].torque, 0.0, 1e-12); // uniform λ has no moment about the centre

@@ -70,7 +70,7 @@ void expect_multigrid_matches_sweeps(const BoundaryConditions<Dim>& bc)
         MomentumSettings multigrid{ConvectionScheme::central, 1.0, 4, 1};
         MomentumSystem<Dim> system(grid);
         static_cast<void>(
-            assemble_momentum(grid, bc, fluid, sweeps_alone, dt, start, axis, system));
+            assemble_momentum(grid, bc, fluid, sweeps_alone, TimeLevels{dt}, start, axis, system));
 
         FluidState<Dim> reference = start;
         solve_momentum(grid, bc, sweeps_alone, system, axis, reference);

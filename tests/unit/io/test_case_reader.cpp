@@ -355,6 +355,13 @@ std::vector<BadCase> bad_cases()
          14,
          "time.min_end",
          "after the end time"},
+        {"unknown_time_scheme",
+         replace(v, "end = 1.0\n", "end = 1.0\nscheme = \"bdf3\"\n"),
+         {},
+         f,
+         14,
+         "time.scheme",
+         "did you mean 'bdf2'"},
         {"misspelt_pressure_update",
          v + "[simple]\npressure_update = \"rotation\"\n",
          {},
@@ -1152,6 +1159,7 @@ rest_duration = 0.3
 min_end = 0.2
 max_steps = 77
 max_courant = 0.4
+scheme = "bdf2"
 )");
     const CaseConfig c = read_case_string(text, "every.toml");
     EXPECT_EQ(c.title, "cavity");
@@ -1164,6 +1172,7 @@ max_courant = 0.4
     EXPECT_EQ(c.time.min_end, 0.2);
     EXPECT_EQ(c.time.max_steps, 77);
     EXPECT_EQ(c.time.max_courant, 0.4);
+    EXPECT_EQ(c.time.scheme, TimeScheme::bdf2);
     const SimpleConfig& simple = c.simple;
     EXPECT_EQ(simple.tolerance, 1e-4);
     EXPECT_EQ(simple.max_outer_iterations, 12);

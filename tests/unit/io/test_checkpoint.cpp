@@ -359,6 +359,29 @@ TEST(CheckpointRestart, AdaptiveTimeStepContinuesBitForBit)
     expect_bit_identical_continuation<2>(steady, 5, 5);
 }
 
+TEST(CheckpointRestart, Bdf2WithAnAdaptiveStepContinuesBitForBit)
+{
+    // time.scheme = "bdf2" reads u^{n−1}, U^{n−1}, ω^{n−1} and the last Δt (for the step ratio
+    // ω) besides the level-n state. The checkpoint is taken before a step whose Δt differs from
+    // the last one (time.max_courant), so that a lost Δt_{n−1} or level n−1 changes it.
+    const CaseConfig config = read_case_string(falling_balls_case(2), "test:bdf2 disks",
+                                               {"time.max_courant=0.2", "time.scheme=\"bdf2\""});
+    int checkpoint_step = 0;
+    {
+        Simulation<2> probe(config);
+        double last_dt = 0.0;
+        for (int k = 1; k <= 30 && checkpoint_step == 0; ++k) {
+            static_cast<void>(probe.advance());
+            if (k > 2 && probe.clock().dt != last_dt) {
+                checkpoint_step = k - 1; // step k is the first continued one
+            }
+            last_dt = probe.clock().dt;
+        }
+    }
+    ASSERT_GT(checkpoint_step, 0) << "no change of Δt in 30 steps";
+    expect_bit_identical_continuation<2>(config, checkpoint_step, 8);
+}
+
 class CheckpointFileTest : public ::testing::Test {
 protected:
     void SetUp() override

@@ -1,0 +1,15 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/core/time_scheme.hpp"
+
+namespace fddem {
+
+TimeLevels time_levels(TimeScheme scheme, double dt, double previous_dt)
+{
+    if (scheme == TimeScheme::euler || previous_dt <= 0.0) {
+        return {dt, 0.0};
+    }
+    const double ratio = dt / previous_dt; // ω
+    return {dt * (1.0 + ratio) / (1.0 + 2.0 * ratio), ratio * ratio / (1.0 + 2.0 * ratio)};
+}
+
+} // namespace fddem
