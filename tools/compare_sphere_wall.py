@@ -9,7 +9,6 @@ correction (lubrication_f*), their sum, Brenner's series, the ratios to it, and 
 what the correction assumes the grid resolves (its c(h_Δ) subtraction), to set beside κ_hydro; the
 largest deviation of the total over 0.1 ≤ δ/r ≤ 2. With -o, κ/κ_Brenner against δ/r of every run.
 """
-import argparse
 import os
 import sys
 
@@ -17,17 +16,13 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "python"))
 from fddem import sphere_wall  # noqa: E402
+from fddem.figures import comparison_parser, run_labels  # noqa: E402
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("runs", nargs="+")
-    parser.add_argument("-o", "--output")
-    parser.add_argument("--label", nargs="+", help="legend labels, one per run")
+    parser = comparison_parser(__doc__.splitlines()[0])
     args = parser.parse_args()
-    if args.label and len(args.label) != len(args.runs):
-        parser.error("give one --label per run")
-    labels = args.label or [os.path.basename(os.path.normpath(r)) for r in args.runs]
+    labels = run_labels(parser, args)
     for run, label in zip(args.runs, labels):
         try:
             r = sphere_wall.kappa_at(run)

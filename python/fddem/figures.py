@@ -53,6 +53,24 @@ def save_one_panel(path, draw, title, size=(7, 4.5), grid_which="major"):
     return path
 
 
+def comparison_parser(description):
+    """The command line of a tools/compare_*.py script: RUN_DIR ..., -o PNG, --label NAME ..."""
+    import argparse
+
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("runs", nargs="+")
+    parser.add_argument("-o", "--output")
+    parser.add_argument("--label", nargs="+", help="legend labels, one per run")
+    return parser
+
+
+def run_labels(parser, args):
+    """One label per run: the --label given, or each run directory's name."""
+    if args.label and len(args.label) != len(args.runs):
+        parser.error("give one --label per run")
+    return args.label or [os.path.basename(os.path.normpath(r)) for r in args.runs]
+
+
 def _panel_size(run, width=4.2, widest=10.0, tallest=8.0):
     """(width, height) in inches of a panel showing the box's display plane: `width` wide
     (at most `tallest` high) when the box is taller than wide, else wide enough for a

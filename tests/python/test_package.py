@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 
 import fddem  # noqa: E402
-from fddem import impulsive_cylinder, io, slices, sphere_wall, ten_cate  # noqa: E402
+from fddem import impulsive_cylinder, io, rebound, slices, sphere_wall, ten_cate  # noqa: E402
 from synthetic_run import make_run, velocity_field  # noqa: E402
 
 # A figure with a picture in it: pixel values vary. A blank (one-colour) PNG has variance 0;
@@ -451,3 +451,103 @@ class SphereWall(unittest.TestCase):
         self.assertTrue(np.all(np.isnan(r["total"][2:])))
         self.assertAlmostEqual(worst["max"], 0.1, delta=1e-3)
         self.assertEqual(worst["points"], 2)
+
+
+def write_bounce_run(directory, t, gap, w, diameter, floor):
+    """A run directory holding one sphere whose lowest point is `gap` (in d) above the floor
+    z = `floor`: case.toml (domain origin and the body's diameter) and particles.csv."""
+    with open(os.path.join(directory, "case.toml"), "w") as f:
+        f.write(f"[domain]\norigin = [0.0, 0.0, {floor}]\nsize = [0.01, 0.01, 0.05]\n\n"
+                f"[[bodies]]\nshape = 'sphere'\ndiameter = {diameter}\n")
+    z = floor + 0.5 * diameter + np.asarray(gap) * diameter
+    with open(os.path.join(directory, "particles.csv"), "w") as f:
+        f.write("time,id,x,y,z,u,v,w\n")
+        for row in zip(t, z, w):
+            f.write("{!r},0,0.005,0.005,{!r},0,0,{!r}\n".format(*row))
+
+
+class Rebound(unittest.TestCase):
+    """tools/compare_rebound.py's measures (python/fddem/rebound.py): on a ball bouncing in
+    vacuum with a known restitution, where every number is exact, and on Gondret's data."""
+
+    G, D, V_IN, E = 9.81, 0.002, 0.5, 0.8  # other units and values than the St 152 case
+
+    def ballistic(self, t_contact=0.0123, dt=2e-4, bounces=3):
+        """gap/d and w of a ball hitting the floor at V_IN at t_contact and leaving each contact
+        (instantaneous) at E times its impact speed, sampled every dt from t = 0."""
+        t = np.arange(0.0, t_contact + sum(2 * self.E**n * self.V_IN / self.G
+                                           for n in range(1, bounces + 1)), dt)
+        starts, speeds = [t_contact], [self.V_IN]
+        for n in range(1, bounces + 1):
+            speeds.append(self.E * speeds[-1])
+            starts.append(starts[-1] + 2 * speeds[-1] / self.G)
+        gap, w = np.empty_like(t), np.empty_like(t)
+        for k, tk in enumerate(t):
+            if tk < t_contact:
+                tau = t_contact - tk
+                gap[k], w[k] = self.V_IN * tau - 0.5 * self.G * tau**2, -self.V_IN + self.G * tau
+            else:
+                n = np.searchsorted(starts, tk, side="right") - 1
+                n = min(n, bounces)
+                s = tk - starts[n]
+                up = speeds[n + 1] if n + 1 < len(speeds) else 0.0
+                gap[k], w[k] = up * s - 0.5 * self.G * s**2, up - self.G * s
+        return t, gap / self.D, w, starts, speeds
+
+    def test_a_ballistic_bounce_gives_its_restitution_peaks_and_contact(self):
+        t, gap, w, starts, speeds = self.ballistic()
+        with tempfile.TemporaryDirectory() as directory:
+            write_bounce_run(directory, t, gap, w, self.D, floor=-0.01)
+            t_run, gap_run, _, diameter = rebound.run_trajectory(directory)
+        np.testing.assert_allclose(gap_run, gap, atol=1e-9)
+        self.assertEqual(diameter, self.D)
+        r = rebound.measure(t_run, gap_run, diameter=diameter)
+        # The first zero by linear interpolation: error g dt²/(8 v) = 1e-7 s on a parabola.
+        self.assertAlmostEqual(r["t_contact"], 0.0123, delta=1e-6)
+        # Quadratic fits of exact parabolas, evaluated 1e-7 s off: 1e-6 m/s.
+        self.assertAlmostEqual(r["v_in"], -self.V_IN, delta=1e-5)
+        self.assertAlmostEqual(r["v_out"], self.E * self.V_IN, delta=1e-5)
+        self.assertAlmostEqual(r["e_eff"], self.E, delta=1e-4)
+        # Apex n: (E^n V)²/(2g) at E^n V/g after contact n; the parabola through three samples
+        # of a parabola is exact. The series ends at the fourth contact: three flights.
+        self.assertEqual(len(r["peaks"]), 3)
+        for n, (tp, gp) in enumerate(r["peaks"], start=1):
+            self.assertAlmostEqual(gp, speeds[n]**2 / (2 * self.G) / self.D, delta=1e-6)
+            self.assertAlmostEqual(tp, starts[n - 1] - 0.0123 + speeds[n] / self.G, delta=1e-6)
+
+    def test_a_sampled_contact_that_never_reaches_zero_is_extrapolated(self):
+        # The same ball sampled every 2 ms, as the digitised data: the zero of the approach line.
+        t, gap, _, _, _ = self.ballistic(t_contact=0.0131, dt=2e-3)
+        self.assertTrue(np.all(gap > 0.0))
+        # Line through the two samples before the minimum (t = 0.010, 0.012): 1.1 ms from the
+        # last, the ball at ~0.49 m/s there: within g·(2 ms)(1.1 ms)/(2 v) ≈ 2e-5 s.
+        self.assertAlmostEqual(rebound.contact_time(t, gap), 0.0131, delta=5e-5)
+
+    def test_touch_and_separation_speeds_of_an_overlapping_contact(self):
+        t = np.linspace(0.0, 2.0, 201)
+        gap = np.abs(t - 1.0) - 0.2  # overlapping from t = 0.8 to 1.2 (samples at both)
+        w = np.where(t < 1.0, -1.0, 0.5)
+        s = rebound.touch_speeds(t, gap, w, rebound.contact_time(t, gap))
+        self.assertEqual(s["rows"], (80, 122))  # rows 80 ... 121: from the touch to t = 1.21
+        self.assertAlmostEqual(s["touch"], 1.0)
+        self.assertAlmostEqual(s["separation"], 0.5)
+        self.assertAlmostEqual(s["e_contact"], 0.5)
+
+    def test_gondret_data_gives_the_published_peaks_and_itself_matches(self):
+        t, gap = rebound.load_reference("st152")
+        r = rebound.measure(t, gap, diameter=0.003)
+        # The digitised file's origin is within one sample (2 ms) of the contact (SOURCE.md);
+        # the approach line meets the wall 0.07 ms before it; its slope is Biegert's 0.585 m/s
+        # within the digitisation (SOURCE.md: 0.585-0.588 over the whole approach).
+        self.assertLess(abs(r["t_contact"]), 2e-3)
+        self.assertAlmostEqual(-r["v_in"], 0.585, delta=0.02)
+        np.testing.assert_allclose([g for _, g in r["peaks"]], (2.49, 0.74, 0.17), atol=0.01)
+        with tempfile.TemporaryDirectory() as directory:
+            write_bounce_run(directory, t, gap, np.gradient(gap * 0.003, t), 0.003, floor=0.0)
+            same = rebound.compare(directory, "st152")
+            write_bounce_run(directory, t, 1.1 * gap, np.gradient(gap * 0.003, t), 0.003, floor=0.0)
+            high = rebound.compare(directory, "st152")
+        self.assertLess(same["rms"], 1e-12)
+        self.assertEqual(same["points"], len(t))
+        self.assertAlmostEqual(same["run"]["e_eff"], same["reference"]["e_eff"], delta=1e-12)
+        self.assertGreater(high["rms"], 0.05)

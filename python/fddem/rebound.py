@@ -1,0 +1,263 @@
+"""A sphere bouncing on a wall in a liquid: its trajectory, gap against time, against Gondret,
+Lance & Petit (2002), Phys. Fluids 14, 643 (cases/validation/rebound_stokes/, SOURCE.md there).
+
+Everything is measured the same way on the run and on the digitised data, from the gap alone
+(the distance from the sphere's lowest point to the wall, in units of its diameter d):
+
+- **first contact** t_c: where the gap first reaches 0, interpolated linearly between the two
+  samples around it; a sampled trajectory that never reaches 0 (the digitised data: samples
+  every 2 ms, the contact lasts ≪ 1 ms) is extended to 0 along the line through the two
+  samples before its first local minimum. The time axis of every comparison is t − t_c.
+- **peaks**: the maxima of the gap between successive bounces (a hysteresis of `prominence` d
+  keeps noise from counting as a bounce), each refined by the parabola through the highest
+  sample and its two neighbours (a 2 ms sampling would otherwise clip a peak).
+- **impact and rebound velocities** v_in, v_out: the slope at t_c of a polynomial (degree 2, or
+  1 with two samples) fitted to the samples of the approach, respectively of the first rebound,
+  whose gap lies in `FIT_WINDOW` (0.02 d to 1 d): the trajectory just outside the film, as an
+  experiment measures it, extended to the contact.
+- **e_eff = −v_out / v_in**, the effective restitution of the first bounce: what Gondret et al.
+  and Joseph et al. (2001) call e, the ratio of the velocities just after and just before the
+  contact, read from the trajectory (and what Legendre et al. 2006 fit as e_dry exp(−35/St)).
+
+A run (cases/validation/gondret_rebound_st*) also gives the sphere's own velocity w; from it
+the speed at the touch (interpolated at t_c) and at the separation (the first time the gap is
+positive again): their ratio, e_contact, is the contact model's restitution with the
+lubrication correction during the overlap, without the fluid around the contact.
+"""
+
+import math
+import os
+
+import numpy as np
+
+from . import io
+from .references import SOURCE_ROOT
+
+REFERENCE_DIRECTORY = os.path.join(SOURCE_ROOT, "cases", "validation", "rebound_stokes")
+LABEL = "Gondret et al. (2002), measured"
+FIT_WINDOW = (0.02, 1.0)  # gap / d of the samples the velocity fits use
+# case: diameter [m], impact speed [m/s] and St of Biegert, Vowinckel & Meiburg (2017) Table 1,
+# the published peak heights (gap/d) of SOURCE.md, and whether the file holds the approach.
+CASES = {
+    "st152": {"file": "gondret2002_trajectory_st152.csv", "diameter": 0.003, "impact": 0.585,
+              "stokes": 152.0, "peaks": (2.49, 0.74, 0.17), "has_approach": True},
+    "st27": {"file": "gondret2002_trajectory_st27.csv", "diameter": 0.006, "impact": 0.518,
+             "stokes": 27.0, "peaks": (0.33,), "has_approach": False},
+}
+
+
+def load_reference(case, directory=REFERENCE_DIRECTORY):
+    """(t [s], gap/d) of the digitised trajectory of `case` ("st152" or "st27")."""
+    table = np.loadtxt(os.path.join(directory, CASES[case]["file"]), delimiter=",", skiprows=5)
+    return table[:, 0], table[:, 3]
+
+
+def contact_time(t, gap):
+    """The first contact (module docstring): the interpolated first zero of the gap, or the
+    zero of the line through the two samples before the first local minimum; None when neither
+    exists (a trajectory that starts after the contact)."""
+    t, gap = np.asarray(t, dtype=float), np.asarray(gap, dtype=float)
+    touching = np.flatnonzero(gap <= 0.0)
+    if touching.size:
+        k = touching[0]
+        if k == 0:
+            return float(t[0])
+        return float(t[k - 1] + (t[k] - t[k - 1]) * gap[k - 1] / (gap[k - 1] - gap[k]))
+    falling = np.flatnonzero(np.diff(gap) < 0.0)
+    rising = np.flatnonzero(np.diff(gap) > 0.0)
+    if not falling.size:
+        return None
+    after = rising[rising > falling[0]]
+    if not after.size:
+        return None
+    k = after[0]  # the first local minimum
+    if k < 2:
+        return None
+    slope = (gap[k - 1] - gap[k - 2]) / (t[k - 1] - t[k - 2])
+    return float(t[k - 1] - gap[k - 1] / slope) if slope < 0.0 else None
+
+
+def _refined_maximum(t, gap, k):
+    """The vertex of the parabola through samples k−1, k, k+1 (the sample itself at an end or
+    when the three are collinear)."""
+    if k == 0 or k == len(gap) - 1:
+        return float(t[k]), float(gap[k])
+    coeffs = np.polyfit(t[k - 1:k + 2] - t[k], gap[k - 1:k + 2], 2)
+    if coeffs[0] >= 0.0:
+        return float(t[k]), float(gap[k])
+    tv = -coeffs[1] / (2.0 * coeffs[0])
+    if abs(tv) > max(t[k + 1] - t[k], t[k] - t[k - 1]):
+        return float(t[k]), float(gap[k])
+    return float(t[k] + tv), float(np.polyval(coeffs, tv))
+
+
+def peaks(t, gap, t_start, prominence=0.02):
+    """The maxima of the gap after t_start, each a rise and a fall of at least `prominence`
+    (same unit as gap), as a list of (t, gap), refined by a parabola."""
+    t, gap = np.asarray(t, dtype=float), np.asarray(gap, dtype=float)
+    found = []
+    low, high, high_at, rising = math.inf, -math.inf, None, False
+    for k in np.flatnonzero(t >= t_start):
+        g = gap[k]
+        if not rising:
+            low = min(low, g)
+            if g > low + prominence:
+                rising, high, high_at = True, g, k
+        else:
+            if g > high:
+                high, high_at = g, k
+            if g < high - prominence:
+                found.append(_refined_maximum(t, gap, high_at))
+                rising, low = False, g
+    return found
+
+
+def fitted_velocity(t, gap, t_c, side, window=FIT_WINDOW, until=None):
+    """d(gap)/dt at t_c from the samples on `side` ("before" or "after" t_c) with gap within
+    `window`, back to the previous maximum (before) or up to `until` (after): polynomial of
+    degree 2 (1 with two samples) in t − t_c. Gap in the unit of the result's length; None
+    with fewer than two samples."""
+    t, gap = np.asarray(t, dtype=float), np.asarray(gap, dtype=float)
+    inside = (gap >= window[0]) & (gap <= window[1])
+    if side == "before":
+        k = np.flatnonzero(t < t_c)
+        # back to the last sample that is not in the window (the approach only)
+        keep = []
+        for j in k[::-1]:
+            if not inside[j]:
+                if keep:
+                    break
+                continue
+            keep.append(j)
+        keep = np.array(sorted(keep), dtype=int)
+    else:
+        k = np.flatnonzero((t > t_c) & ((t < until) if until is not None else True))
+        keep = []
+        for j in k:
+            if not inside[j]:
+                if keep:
+                    break
+                continue
+            keep.append(j)
+        keep = np.array(keep, dtype=int)
+    if keep.size < 2:
+        return None
+    degree = min(2, keep.size - 1)
+    coeffs = np.polyfit(t[keep] - t_c, gap[keep], degree)
+    return float(np.polyval(np.polyder(coeffs), 0.0))
+
+
+def measure(t, gap, t_c=None, diameter=1.0):
+    """The numbers of one trajectory (gap in units of d, t in s): t_c, the peaks (t − t_c,
+    gap/d), v_in, v_out (m/s with `diameter` in m) and e_eff = −v_out/v_in (module docstring)."""
+    t, gap = np.asarray(t, dtype=float), np.asarray(gap, dtype=float)
+    if t_c is None:
+        t_c = contact_time(t, gap)
+    if t_c is None:
+        raise ValueError("no contact: the gap never reaches 0 nor turns back from the wall")
+    found = peaks(t, gap, t_c)
+    v_in = fitted_velocity(t, gap, t_c, "before")
+    v_out = fitted_velocity(t, gap, t_c, "after", until=found[0][0] if found else None)
+    result = {"t_contact": t_c, "peaks": [(tp - t_c, gp) for tp, gp in found],
+              "v_in": None if v_in is None else v_in * diameter,
+              "v_out": None if v_out is None else v_out * diameter}
+    result["e_eff"] = (-v_out / v_in) if (v_in and v_out is not None) else None
+    return result
+
+
+def run_trajectory(run_dir):
+    """(t, gap/d, w [m/s], d [m]) of the run's first body: gap from its lowest point to the
+    floor (the box's low side along z, gravity along −z)."""
+    case = io.read_case(run_dir)
+    diameter = float(case["bodies"][0]["diameter"])
+    floor = float(case["domain"].get("origin", [0.0, 0.0, 0.0])[2])
+    body = io.read_particles(run_dir)
+    body = body[min(body)]
+    gap = (body["z"] - floor - 0.5 * diameter) / diameter
+    return body["time"], gap, body["w"], diameter
+
+
+def touch_speeds(t, gap, w, t_c):
+    """The run's own speeds: |w| of the last sample before the touch t_c (the speed at which
+    the step that touches starts), w of the first sample with the gap positive again after
+    it (the separation), their ratio, and the rows of the contact (first, last + 1)."""
+    before = np.flatnonzero(t < t_c)
+    k0 = before[-1] if before.size else 0
+    touch = float(-w[k0])
+    later = np.flatnonzero((t > t_c) & (gap > 0.0))
+    if not later.size:
+        return {"touch": touch, "separation": None, "e_contact": None, "rows": (k0 + 1, len(t))}
+    separation = float(w[later[0]])
+    return {"touch": touch, "separation": separation, "e_contact": separation / touch,
+            "rows": (k0 + 1, int(later[0]) + 1)}
+
+
+def contact_impulses(run_dir, t_c):
+    """The impulses on the sphere over the rows of its first contact (touch_speeds' rows):
+    contact, lubrication and resolved fluid force (columns contact_fz, lubrication_fz, fz;
+    each a step's mean, times the step), its buoyant weight, and m Δw, in N·s; and the
+    lubrication's work there (Σ F_lub w Δt, J) against the kinetic energy at the touch."""
+    case = io.read_case(run_dir)
+    body_spec = case["bodies"][0]
+    d = float(body_spec["diameter"])
+    mass = float(body_spec["density"]) * math.pi / 6.0 * d**3
+    g = float(case["fluid"].get("gravity", [0.0, 0.0, 0.0])[2])
+    weight = (float(body_spec["density"]) - float(case["fluid"]["density"])) * math.pi / 6.0 * d**3 * g
+    body = io.read_particles(run_dir)
+    body = body[min(body)]
+    t, w = body["time"], body["w"]
+    floor = float(case["domain"].get("origin", [0.0, 0.0, 0.0])[2])
+    gap = (body["z"] - floor - 0.5 * d) / d
+    k0, k1 = touch_speeds(t, gap, w, t_c)["rows"]
+    dt = np.diff(t)[k0 - 1:k1 - 1]
+    rows = slice(k0, k1)
+    zero = np.zeros_like(t)
+    result = {name: float(np.sum(body.get(name, zero)[rows] * dt))
+              for name in ("contact_fz", "lubrication_fz", "fz")}
+    result["weight"] = float(weight * np.sum(dt))
+    result["momentum_change"] = float(mass * (w[k1 - 1] - w[k0 - 1]))
+    result["lubrication_work"] = float(np.sum(body.get("lubrication_fz", zero)[rows] * w[rows] * dt))
+    result["kinetic_energy"] = float(0.5 * mass * w[k0 - 1] ** 2)
+    result["duration"] = float(t[k1 - 1] - t[k0 - 1])
+    return result
+
+
+def compare(run_dir, case):
+    """The run's and the reference's numbers, and the RMS of gap/d of the run at the
+    reference's times (t − t_c) where both exist, as a dict."""
+    t, gap, w, diameter = run_trajectory(run_dir)
+    mine = measure(t, gap, diameter=diameter)
+    mine.update(touch_speeds(t, gap, w, mine["t_contact"]))
+    # The impulse budget needs the forces and the densities: a run of fddem's, not a table.
+    run_case = io.read_case(run_dir)
+    has_forces = "density" in run_case["bodies"][0] and "fluid" in run_case and np.min(gap) <= 0.0
+    mine["impulses"] = contact_impulses(run_dir, mine["t_contact"]) if has_forces else None
+    mine["overlap"] = float(-np.min(gap)) if np.min(gap) < 0.0 else 0.0
+    ref_t, ref_gap = load_reference(case)
+    spec = CASES[case]
+    reference = measure(ref_t, ref_gap, t_c=None if spec["has_approach"] else 0.0,
+                        diameter=spec["diameter"])
+    shifted = t - mine["t_contact"]
+    ref_shifted = ref_t - reference["t_contact"]
+    both = (ref_shifted >= shifted[0]) & (ref_shifted <= shifted[-1])
+    rms = None
+    if np.any(both):
+        rms = float(np.sqrt(np.mean((np.interp(ref_shifted[both], shifted, gap)
+                                     - ref_gap[both]) ** 2)))
+    return {"run": mine, "reference": reference, "rms": rms, "points": int(np.count_nonzero(both)),
+            "case": case}
+
+
+def plot(axes, run_dirs, case, labels=None):
+    """gap/d against t − t_c of every run over the digitised trajectory."""
+    labels = labels or [os.path.basename(os.path.normpath(r)) for r in run_dirs]
+    ref_t, ref_gap = load_reference(case)
+    ref_tc = contact_time(ref_t, ref_gap) if CASES[case]["has_approach"] else 0.0
+    for run, label in zip(run_dirs, labels):
+        t, gap, _, _ = run_trajectory(run)
+        axes.plot(t - contact_time(t, gap), gap, label=f"fddem {label}")
+    axes.plot(ref_t - ref_tc, ref_gap, "o", ms=3, color="k", mfc="none",
+              label=f"{LABEL}, St {CASES[case]['stokes']:g}")
+    axes.axhline(0.0, color="0.5", lw=0.8)
+    axes.set_xlabel("t − t_contact [s]")
+    axes.set_ylabel("gap / d")
