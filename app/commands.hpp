@@ -23,6 +23,8 @@ struct RunOptions {
     std::vector<std::string> overrides;
     bool force = false;
     bool quiet = false;
+    /// The MPI processes running this command (mpirun -n): more than one splits the grid.
+    int n_processes = 1;
 };
 
 struct ValidateOptions {

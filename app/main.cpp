@@ -140,13 +140,33 @@ int main(int argc, char** argv)
     if (is_mpi_started != 0) {
         MPI_Comm_size(MPI_COMM_WORLD, &n_processes);
     }
+    int rank = 0;
     if (n_processes > 1) {
-        std::fprintf(stderr,
-                     "fddem: runs on more than one MPI process are not supported yet "
-                     "(got %d); run with one process\n",
-                     n_processes);
-        return exit_bad_input;
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+        if (!*run_cmd) {
+            if (rank == 0) {
+                std::fprintf(stderr,
+                             "fddem: only `fddem run` runs on more than one MPI process (got "
+                             "%d); run this command with one process\n",
+                             n_processes);
+            }
+            return exit_bad_input;
+        }
     }
+    run.n_processes = n_processes;
+    // On several processes an error that one rank meets would leave the others waiting in a
+    // collective: every error ends all of them (MPI_Abort, with the same exit status). An
+    // input error is met by every rank alike and said once, by rank 0.
+    const auto fail = [&](int status, const std::string& text, bool is_said_by_every_rank) {
+        if (rank == 0 || !is_said_by_every_rank) {
+            std::fprintf(stderr, "%s\n", text.c_str());
+        }
+        if (n_processes > 1) {
+            std::fflush(stderr);
+            MPI_Abort(MPI_COMM_WORLD, status);
+        }
+        return status;
+    };
 
     try {
         if (*run_cmd) {
@@ -160,10 +180,9 @@ int main(int argc, char** argv)
         }
         return info_command(keys, markdown);
     } catch (const fddem::InputError& e) {
-        std::fprintf(stderr, "fddem: %s\n", e.formatted().c_str());
-        return exit_bad_input;
+        return fail(exit_bad_input, "fddem: " + e.formatted(), true);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "fddem: internal error: %s\n", e.what());
-        return exit_internal_error;
+        const std::string where = n_processes > 1 ? " (rank " + std::to_string(rank) + ")" : "";
+        return fail(exit_internal_error, "fddem: internal error" + where + ": " + e.what(), false);
     }
 }

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <type_traits>
 
 namespace fddem {
@@ -365,19 +366,27 @@ StencilView<Dim> fine_level(const MacGrid<Dim>& grid, const BoundaryConditions<D
 
 /// coarse.rhs = the fine residual a_P/α · (s − u + Σ c_nb u_nb) summed over each block, and
 /// coarse.x = 0: one coarse row at a time, reading its fine rows with unit stride (cheaper than
-/// restrict_sum's call per unknown).
+/// restrict_sum's call per unknown). On a split grid `fine` is this rank's part of the whole
+/// level (`part`): only the blocks that meet it are written, and coarse.rhs and coarse.x must
+/// be zero elsewhere.
 template <int Dim>
-void restrict_residual(const StencilView<Dim>& fine, const ScaledSystem<Dim>& scaled,
-                       const double* a_p, double alpha, const double* u, CoarseLevel<Dim>& coarse)
+void restrict_residual(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
+                       const ScaledSystem<Dim>& scaled, const double* a_p, double alpha,
+                       const double* u, CoarseLevel<Dim>& coarse)
 {
+    // The coarse rows the part meets, and the coarse columns [first, last] along x.
     Box<Dim> coarse_rows;
-    coarse_rows.hi = coarse.n;
-    coarse_rows.hi[0] = 1;
+    for (std::size_t d = 0; d < coarse_rows.lo.size(); ++d) {
+        coarse_rows.lo[d] = part.offset[d] / 2;
+        coarse_rows.hi[d] = (part.offset[d] + fine.n[d] - 1) / 2 + 1;
+    }
+    const int first = coarse_rows.lo[0];
+    const auto width = static_cast<std::size_t>(coarse_rows.hi[0] - first);
+    coarse_rows.hi[0] = first + 1;
     for_each_index(
         coarse_rows,
         [&](const Index<Dim>& coarse_row) {
             const std::size_t out = coarse.offset(coarse_row);
-            const auto width = static_cast<std::size_t>(coarse.n[0]);
             std::fill_n(coarse.rhs.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
             std::fill_n(coarse.x.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
             for (int member = 0; member < (1 << (Dim - 1)); ++member) {
@@ -385,8 +394,8 @@ void restrict_residual(const StencilView<Dim>& fine, const ScaledSystem<Dim>& sc
                 bool is_inside = true;
                 for (int d = 1; d < Dim; ++d) {
                     const auto sd = static_cast<std::size_t>(d);
-                    i[sd] = 2 * coarse_row[sd] + ((member >> (d - 1)) & 1);
-                    is_inside = is_inside && i[sd] < fine.n[sd];
+                    i[sd] = 2 * coarse_row[sd] + ((member >> (d - 1)) & 1) - part.offset[sd];
+                    is_inside = is_inside && i[sd] >= 0 && i[sd] < fine.n[sd];
                 }
                 if (!is_inside) {
                     continue;
@@ -394,27 +403,74 @@ void restrict_residual(const StencilView<Dim>& fine, const ScaledSystem<Dim>& sc
                 const std::ptrdiff_t row_offset = fine.at(i);
                 for (int x = 0; x < fine.n[0]; ++x) {
                     const std::ptrdiff_t o = row_offset + x;
-                    coarse.rhs[out + static_cast<std::size_t>(x / 2)] +=
+                    coarse.rhs[out + static_cast<std::size_t>((x + part.offset[0]) / 2 - first)] +=
                         a_p[o] / alpha * scaled.residual(u, o);
                 }
             }
         },
-        (std::size_t{1} << Dim) * static_cast<std::size_t>(coarse.n[0]));
+        (std::size_t{1} << Dim) * width);
 }
 
 /// u += P coarse.x: each fine unknown takes its block's correction.
 template <int Dim>
 void add_coarse_correction(const Box<Dim>& box, const StencilView<Dim>& fine,
-                           const CoarseLevel<Dim>& coarse, double* u)
+                           const LevelPart<Dim>& part, const CoarseLevel<Dim>& coarse, double* u)
 {
     for_each_row(box, [&](const Index<Dim>& row) {
         Index<Dim> i = row - box.lo;
         const std::ptrdiff_t row_offset = fine.at(i);
+        Index<Dim> at = i + part.offset; // the index in the whole level
         for (int x = 0; x < fine.n[0]; ++x) {
-            i[0] = x;
-            u[row_offset + x] += coarse.x[coarse.offset(coarse_index<Dim>(i))];
+            at[0] = x + part.offset[0];
+            u[row_offset + x] += coarse.x[coarse.offset(coarse_index<Dim>(at))];
         }
     });
+}
+
+/// The unknown faces of component `axis` in the whole domain: unknown_faces on one process.
+template <int Dim>
+Box<Dim> whole_unknown_faces(const MacGrid<Dim>& grid, int axis)
+{
+    Box<Dim> box = grid.cell_box();
+    if (!grid.is_periodic(axis)) {
+        box.lo[static_cast<std::size_t>(axis)] = 1; // face 0 and face n are boundary faces
+    }
+    return box;
+}
+
+/// Adds up `values` over the grid's ranks in place (nothing to do on one process).
+void sum_over_ranks(const Communicator& ranks, std::vector<double>& values)
+{
+    ranks.sum(std::span<double>(values));
+}
+
+/// The multigrid's levels below `fine`. On a split grid (`part` a part of the whole level)
+/// every rank builds its share of the whole first coarse level, the shares are summed over the
+/// ranks, and every rank then holds the same whole hierarchy below it (a redundant coarse
+/// solve: the levels are 2^Dim and more times smaller than the fine grid, and the result is
+/// the one-process hierarchy, up to the order of additions, whatever the layout).
+template <int Dim>
+void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
+                  const LevelPart<Dim>& part, std::vector<CoarseLevel<Dim>>& levels)
+{
+    if (!grid.communicator().uses_mpi()) {
+        build_coarse_levels(fine, levels);
+        return;
+    }
+    if (coarse_extent<Dim>(part.whole_n) == part.whole_n) {
+        levels.clear();
+        return;
+    }
+    if (levels.empty()) {
+        levels.emplace_back();
+    }
+    CoarseLevel<Dim>& first = levels.front();
+    aggregate_part(fine, part, first);
+    sum_over_ranks(grid.communicator(), first.diagonal);
+    for (auto& a : first.a_nb) {
+        sum_over_ranks(grid.communicator(), a);
+    }
+    extend_coarse_levels(levels);
 }
 
 } // namespace
@@ -438,9 +494,12 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     }
 
     const StencilView<Dim> fine = fine_level(grid, bc, box, alpha, system);
+    const Box<Dim> whole = whole_unknown_faces(grid, axis);
+    const LevelPart<Dim> part{box.lo - whole.lo, whole.hi - whole.lo};
+    const bool is_split = grid.communicator().uses_mpi();
     // Rebuilt at every solve: a hierarchy kept for the whole time step (the coefficients
     // change between outer iterations) made the eighteen-disk case blow up at a collision.
-    build_coarse_levels(fine, system.coarse_levels);
+    build_levels(grid, fine, part, system.coarse_levels);
     const int pre_sweeps = settings.sweeps / 2;
     const int post_sweeps = settings.sweeps - pre_sweeps;
     for (int cycle = 0; cycle < settings.cycles; ++cycle) {
@@ -449,9 +508,14 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
         }
         if (!system.coarse_levels.empty()) {
             CoarseLevel<Dim>& coarse = system.coarse_levels.front();
-            restrict_residual(fine, scaled, system.a_p.data(), alpha, u.data(), coarse);
+            if (is_split) {
+                std::fill(coarse.rhs.begin(), coarse.rhs.end(), 0.0);
+                std::fill(coarse.x.begin(), coarse.x.end(), 0.0);
+            }
+            restrict_residual(fine, part, scaled, system.a_p.data(), alpha, u.data(), coarse);
+            sum_over_ranks(grid.communicator(), coarse.rhs);
             coarse_v_cycle(system.coarse_levels, 0, 2);
-            add_coarse_correction(box, fine, coarse, u.data());
+            add_coarse_correction(box, fine, part, coarse, u.data());
             HaloExchange<Dim>(grid).fill(u);
         }
         for (int k = 0; k < post_sweeps; ++k) {

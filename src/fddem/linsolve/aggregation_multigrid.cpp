@@ -145,12 +145,13 @@ constexpr Link classify_link(int at, int side, int n, int n_coarse, bool is_peri
     return there / 2 == at / 2 ? Link::inside_block : Link::to_next_block;
 }
 
-/// coarse = R A P of `fine` (blocks of 2^Dim, piecewise-constant P, summing R).
+/// Sizes `coarse` as the aggregation of a level of extent `fine_n`, all zero.
 template <int Dim>
-void aggregate(const StencilView<Dim>& fine, CoarseLevel<Dim>& coarse)
+void reset_coarse(const Index<Dim>& fine_n, const std::array<bool, Dim>& periodic,
+                  CoarseLevel<Dim>& coarse)
 {
-    coarse.n = coarse_extent<Dim>(fine.n);
-    coarse.periodic = fine.periodic;
+    coarse.n = coarse_extent<Dim>(fine_n);
+    coarse.periodic = periodic;
     std::size_t size = 1;
     for (const int e : coarse.n) {
         size *= static_cast<std::size_t>(e);
@@ -161,6 +162,38 @@ void aggregate(const StencilView<Dim>& fine, CoarseLevel<Dim>& coarse)
     }
     coarse.rhs.assign(size, 0.0);
     coarse.x.assign(size, 0.0);
+}
+
+/// Adds fine unknown `at` (flat offset `fo`; `at` and `n` are whole-level indices and extent)
+/// to its block's coarse unknown (flat offset `co`): its diagonal, its links inside the block
+/// taken off the diagonal, its links to the next blocks as theirs.
+template <int Dim>
+void add_member(const StencilView<Dim>& fine, std::ptrdiff_t fo, const Index<Dim>& at,
+                const Index<Dim>& n, std::size_t co, CoarseLevel<Dim>& coarse)
+{
+    coarse.diagonal[co] += fine.diagonal[fo] * fine.diagonal_scale;
+    for (std::size_t d = 0; d < at.size(); ++d) {
+        for (int side = 0; side < 2; ++side) {
+            const double a = fine.a_nb[2 * d + static_cast<std::size_t>(side)][fo];
+            switch (classify_link(at[d], side, n[d], coarse.n[d], fine.periodic[d])) {
+            case Link::inside_block:
+                coarse.diagonal[co] -= a;
+                break;
+            case Link::to_next_block:
+                coarse.a_nb[2 * d + static_cast<std::size_t>(side)][co] += a;
+                break;
+            case Link::to_known_value:
+                break; // no error there
+            }
+        }
+    }
+}
+
+/// coarse = R A P of `fine` (blocks of 2^Dim, piecewise-constant P, summing R).
+template <int Dim>
+void aggregate(const StencilView<Dim>& fine, CoarseLevel<Dim>& coarse)
+{
+    reset_coarse<Dim>(fine.n, fine.periodic, coarse);
 
     Box<Dim> blocks;
     blocks.hi = coarse.n;
@@ -200,24 +233,7 @@ void aggregate(const StencilView<Dim>& fine, CoarseLevel<Dim>& coarse)
                 return;
             }
             for_each_in_block<Dim>(c, fine.n, [&](const Index<Dim>& i) {
-                const std::ptrdiff_t fo = fine.at(i);
-                coarse.diagonal[co] += fine.diagonal[fo] * fine.diagonal_scale;
-                for (std::size_t d = 0; d < i.size(); ++d) {
-                    for (int side = 0; side < 2; ++side) {
-                        const double a = fine.a_nb[2 * d + static_cast<std::size_t>(side)][fo];
-                        switch (
-                            classify_link(i[d], side, fine.n[d], coarse.n[d], fine.periodic[d])) {
-                        case Link::inside_block:
-                            coarse.diagonal[co] -= a;
-                            break;
-                        case Link::to_next_block:
-                            coarse.a_nb[2 * d + static_cast<std::size_t>(side)][co] += a;
-                            break;
-                        case Link::to_known_value:
-                            break; // no error there
-                        }
-                    }
-                }
+                add_member<Dim>(fine, fine.at(i), i, fine.n, co, coarse);
             });
         },
         std::size_t{1} << Dim);
@@ -247,24 +263,65 @@ template <int Dim>
 void build_coarse_levels(const StencilView<Dim>& fine, std::vector<CoarseLevel<Dim>>& levels,
                          std::size_t coarsest_size)
 {
-    std::size_t count = 0;
-    StencilView<Dim> above = fine;
-    while (true) {
-        const Index<Dim> n = coarse_extent<Dim>(above.n);
-        if (n == above.n) {
+    if (coarse_extent<Dim>(fine.n) == fine.n) {
+        levels.clear(); // every extent is 1: nothing to merge
+        return;
+    }
+    if (levels.empty()) {
+        levels.emplace_back();
+    }
+    aggregate(fine, levels.front());
+    extend_coarse_levels(levels, coarsest_size);
+}
+
+template <int Dim>
+void extend_coarse_levels(std::vector<CoarseLevel<Dim>>& levels, std::size_t coarsest_size)
+{
+    std::size_t count = 1;
+    while (levels[count - 1].size() > coarsest_size) {
+        // (The view points into the level's arrays, which a reallocation of `levels` moves
+        // without copying.)
+        const StencilView<Dim> above = levels[count - 1].view();
+        if (coarse_extent<Dim>(above.n) == above.n) {
             break; // every extent is 1: nothing left to merge
         }
         if (levels.size() <= count) {
             levels.emplace_back();
         }
         aggregate(above, levels[count]);
-        above = levels[count].view();
         ++count;
-        if (levels[count - 1].size() <= coarsest_size) {
-            break;
-        }
     }
     levels.resize(count);
+}
+
+template <int Dim>
+void aggregate_part(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
+                    CoarseLevel<Dim>& coarse)
+{
+    reset_coarse<Dim>(part.whole_n, fine.periodic, coarse);
+    // The blocks that meet the part, one coarse unknown per call: each writes only its own
+    // coefficients, from the members this part holds.
+    Box<Dim> blocks;
+    for (std::size_t d = 0; d < blocks.lo.size(); ++d) {
+        blocks.lo[d] = part.offset[d] / 2;
+        blocks.hi[d] = (part.offset[d] + fine.n[d] - 1) / 2 + 1;
+    }
+    for_each_index(
+        blocks,
+        [&](const Index<Dim>& c) {
+            const std::size_t co = coarse.offset(c);
+            for_each_in_block<Dim>(c, part.whole_n, [&](const Index<Dim>& at) {
+                Index<Dim> i{};
+                for (std::size_t d = 0; d < i.size(); ++d) {
+                    i[d] = at[d] - part.offset[d];
+                    if (i[d] < 0 || i[d] >= fine.n[d]) {
+                        return; // another process's member
+                    }
+                }
+                add_member<Dim>(fine, fine.at(i), at, part.whole_n, co, coarse);
+            });
+        },
+        std::size_t{1} << Dim);
 }
 
 template <int Dim>
@@ -310,6 +367,10 @@ template void build_coarse_levels<2>(const StencilView<2>&, std::vector<CoarseLe
                                      std::size_t);
 template void build_coarse_levels<3>(const StencilView<3>&, std::vector<CoarseLevel<3>>&,
                                      std::size_t);
+template void extend_coarse_levels<2>(std::vector<CoarseLevel<2>>&, std::size_t);
+template void extend_coarse_levels<3>(std::vector<CoarseLevel<3>>&, std::size_t);
+template void aggregate_part<2>(const StencilView<2>&, const LevelPart<2>&, CoarseLevel<2>&);
+template void aggregate_part<3>(const StencilView<3>&, const LevelPart<3>&, CoarseLevel<3>&);
 template void coarse_v_cycle<2>(std::vector<CoarseLevel<2>>&, std::size_t, int);
 template void coarse_v_cycle<3>(std::vector<CoarseLevel<3>>&, std::size_t, int);
 

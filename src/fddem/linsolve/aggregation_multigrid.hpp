@@ -98,6 +98,29 @@ template <int Dim>
 void build_coarse_levels(const StencilView<Dim>& fine, std::vector<CoarseLevel<Dim>>& levels,
                          std::size_t coarsest_size = 64);
 
+/// Where one process's part of a fine level split over several processes sits: its unknowns
+/// are the whole level's [offset, offset + n) (StencilView::n is the part's extent), and the
+/// whole level's extent is whole_n. Blocks are merged by whole-level index, so a block may
+/// straddle two processes' parts.
+template <int Dim>
+struct LevelPart {
+    Index<Dim> offset{};
+    Index<Dim> whole_n{};
+};
+
+/// Sets `coarse` to the whole first coarse level, R A P, of the level `fine` is a part of, but
+/// holding only the terms of this part's unknowns (zero elsewhere). Summed over the processes
+/// (in any fixed order), these shares are build_coarse_levels' first level of the whole level,
+/// up to the order of the additions.
+template <int Dim>
+void aggregate_part(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
+                    CoarseLevel<Dim>& coarse);
+
+/// Builds levels[1], levels[2], … below levels[0], which the caller has built, as
+/// build_coarse_levels does below its fine level. `levels` must not be empty.
+template <int Dim>
+void extend_coarse_levels(std::vector<CoarseLevel<Dim>>& levels, std::size_t coarsest_size = 64);
+
 /// One V-cycle on levels[k], levels[k+1], …: approximately solves levels[k]'s system for
 /// levels[k].x from levels[k].rhs, starting from x = 0; `sweeps` Gauss–Seidel sweeps before
 /// and after each coarse correction, and sweeps until converged (at most 50) on the coarsest.

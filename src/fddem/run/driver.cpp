@@ -8,6 +8,7 @@
 #include "fddem/io/atomic_file.hpp"
 #include "fddem/io/checkpoint.hpp"
 #include "fddem/io/checkpoint_files.hpp"
+#include "fddem/io/gathering_archive.hpp"
 #include "fddem/io/run_directory.hpp"
 #include "fddem/run/body_snapshot.hpp"
 #include "fddem/run/line_samples.hpp"
@@ -15,6 +16,7 @@
 #include "fddem/run/output_schedule.hpp"
 #include "fddem/run/run_messages.hpp"
 #include "fddem/run/run_summary.hpp"
+#include "fddem/simulation/simulation_setup.hpp"
 
 #include <fmt/format.h>
 
@@ -26,10 +28,34 @@ namespace fs = std::filesystem;
 using Seconds = std::chrono::duration<double>;
 
 template <int Dim>
-Driver<Dim>::Driver(const CaseConfig& config, fs::path directory, RunMonitor& monitor)
-    : config_(config), sim_(config), directory_(std::move(directory)), monitor_(monitor),
-      outputs_(directory_, body_count(sim_) > 0)
+Driver<Dim>::Driver(const CaseConfig& config, fs::path directory, RunMonitor& monitor,
+                    const Communicator& ranks)
+    : config_(config), ranks_(ranks), sim_(config, ranks), directory_(std::move(directory)),
+      monitor_(monitor), outputs_(directory_, body_count(sim_) > 0)
 {
+    if (ranks_.size() > 1) {
+        whole_grid_ = std::make_unique<MacGrid<Dim>>(make_grid<Dim>(config));
+        if (is_writer()) {
+            mirror_ = std::make_unique<Simulation<Dim>>(config);
+        }
+    }
+}
+
+template <int Dim>
+const Simulation<Dim>& Driver<Dim>::gathered()
+{
+    if (!whole_grid_) {
+        return sim_;
+    }
+    ArchiveWriter bytes;
+    GatheringWriter<Dim> writer(sim_.grid(), *whole_grid_, bytes);
+    sim_.save_state(writer);
+    if (!mirror_) {
+        return sim_;
+    }
+    ArchiveReader reader(bytes.bytes());
+    mirror_->load_state(reader);
+    return *mirror_;
 }
 
 template <int Dim>
@@ -37,15 +63,20 @@ RunResult Driver<Dim>::start(bool overwrite)
 {
     // A forced rerun removes the old run's outputs: its checkpoints for a later --restart to
     // find, its summary.json and frames that the new run would not replace.
-    prepare_run_directory(directory_, overwrite);
-    write_file_atomically(directory_ / "case.toml", config_.as_run);
-    outputs_.create();
-    if (outputs_.has_bodies()) {
-        outputs_.append_particles(sim_);
+    if (is_writer()) {
+        prepare_run_directory(directory_, overwrite);
+        write_file_atomically(directory_ / "case.toml", config_.as_run);
+        outputs_.create();
+        if (outputs_.has_bodies()) {
+            outputs_.append_particles(sim_);
+        }
     }
     monitor_.message(memory_message(config_, run_memory_limit(config_)));
     report_derived_values(config_, monitor_);
-    outputs_.write_frame(sim_);
+    const Simulation<Dim>& first = gathered();
+    if (is_writer()) {
+        outputs_.write_frame(first);
+    }
     record_.next_particle_time = config_.output.particle_interval;
     record_.next_field_time = config_.output.field_interval;
     record_.next_checkpoint_time = config_.checkpoint.time_interval;
@@ -73,12 +104,17 @@ RunResult Driver<Dim>::step_to_end()
             record_.last = report;
             record_.total_outer_iterations += report.outer_iterations;
             const Clock& clock = sim_.clock();
-            outputs_.append_step(clock, report, record_.total_outer_iterations, wall_seconds());
+            if (is_writer()) {
+                outputs_.append_step(clock, report, record_.total_outer_iterations, wall_seconds());
+            }
             watch_step(report, clock, config_, record_, monitor_);
             monitor_.step_done(clock.step, clock.time, report.outer_iterations);
             write_scheduled_outputs();
             is_finished = sim_.is_finished(report);
-            signal = is_finished ? 0 : monitor_.pending_interrupt();
+            // Every rank stops at the step where any was asked to (the writer's terminal).
+            signal = is_finished ? 0
+                                 : static_cast<int>(ranks_.max(
+                                       static_cast<double>(monitor_.pending_interrupt())));
             // The last step's checkpoint follows the end-of-run outputs (below).
             if (!is_finished && (take_due_checkpoint(clock, config_.checkpoint.step_interval,
                                                      config_.checkpoint.time_interval,
@@ -114,7 +150,10 @@ RunResult Driver<Dim>::end_run(const std::string& failure, int signal)
         return {RunResult::Outcome::numerical_failure, 0};
     }
     if (signal != 0) {
-        write_summary(fmt::format("interrupted by {} at step {}", signal_name(signal), clock.step));
+        if (is_writer()) {
+            write_summary(
+                fmt::format("interrupted by {} at step {}", signal_name(signal), clock.step));
+        }
         monitor_.message(fmt::format(
             "fddem: interrupted by {}: stopped after step {} (t = {:.6g} s) with a checkpoint, "
             "{}\n  continue with: fddem run --restart {}",
@@ -133,13 +172,17 @@ void Driver<Dim>::write_scheduled_outputs()
 {
     const Clock& clock = sim_.clock();
     if (outputs_.has_bodies() &&
-        take_due_output(clock, config_.output.particle_interval, record_.next_particle_time)) {
+        take_due_output(clock, config_.output.particle_interval, record_.next_particle_time) &&
+        is_writer()) {
         outputs_.append_particles(sim_);
     }
     // output.field_interval = 0: no frames between the first and the last.
     if (config_.output.field_interval > 0.0 &&
         take_due_output(clock, config_.output.field_interval, record_.next_field_time)) {
-        outputs_.write_frame(sim_);
+        const Simulation<Dim>& state = gathered();
+        if (is_writer()) {
+            outputs_.write_frame(state);
+        }
     }
 }
 
@@ -164,29 +207,37 @@ void Driver<Dim>::close_outputs(const std::string& status)
     // A closing field frame off the output schedule is left out of the checkpoint's frames:
     // a continued run drops it and writes its frames on the schedule.
     const std::size_t n_frames = outputs_.n_frames();
-    if (!outputs_.has_frame_at(sim_.clock().time)) {
-        outputs_.write_frame(sim_);
+    const Simulation<Dim>& state = gathered();
+    if (is_writer()) {
+        if (!outputs_.has_frame_at(state.clock().time)) {
+            outputs_.write_frame(state);
+        }
+        write_line_samples(state, config_.output.lines, directory_);
+        write_summary(status);
     }
-    write_line_samples(sim_, config_.output.lines, directory_);
-    write_summary(status);
     write_checkpoint_now(n_frames);
 }
 
 template <int Dim>
 void Driver<Dim>::write_checkpoint_now(std::size_t n_frames)
 {
+    const Simulation<Dim>& state = gathered();
+    last_checkpoint_ = checkpoint_path(directory_, sim_.clock().step);
+    if (!is_writer()) {
+        return;
+    }
     outputs_.record_lengths(record_, n_frames);
     record_.wall_seconds = wall_seconds();
     fs::create_directories(checkpoint_directory(directory_));
-    last_checkpoint_ = checkpoint_path(directory_, sim_.clock().step);
-    write_checkpoint(last_checkpoint_, sim_, record_);
+    write_checkpoint(last_checkpoint_, state, record_);
     prune_checkpoints(directory_, config_.checkpoint.keep);
 }
 
 template <int Dim>
 void Driver<Dim>::write_summary(const std::string& status) const
 {
-    write_run_summary(sim_, config_, record_, status, directory_ / "summary.json");
+    write_run_summary(mirror_ ? *mirror_ : sim_, config_, record_, status,
+                      directory_ / "summary.json");
 }
 
 template class Driver<2>;

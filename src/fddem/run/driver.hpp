@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 namespace fddem {
@@ -32,8 +33,16 @@ template <int Dim>
 class Driver {
 public:
     /// Builds the simulation from `config` (InputError for bad input, before anything is
-    /// written). `monitor` must outlive the driver.
-    Driver(const CaseConfig& config, std::filesystem::path directory, RunMonitor& monitor);
+    /// written), on `ranks`. `monitor` must outlive the driver.
+    ///
+    /// On several ranks (issue 15; the fluid only so far) every rank steps its block, and rank
+    /// 0 alone writes: the run directory, solver.csv, the progress and messages (the other
+    /// ranks' monitors should be quiet), and the field frames, line samples, summary and
+    /// checkpoints of a one-process mirror of the run that the ranks' state is gathered into
+    /// first (io/gathering_archive.hpp). The files are those of a one-process run of the same
+    /// case; a checkpoint continues on any number of ranks.
+    Driver(const CaseConfig& config, std::filesystem::path directory, RunMonitor& monitor,
+           const Communicator& ranks = Communicator::self());
 
     /// A new run: prepares the run directory (InputError if it holds files, unless
     /// `overwrite`), writes the initial outputs, steps to the end.
@@ -63,9 +72,20 @@ private:
     /// The last message of a completed run.
     [[nodiscard]] std::string completion_message() const;
     [[nodiscard]] double wall_seconds() const;
+    /// The run as one process holds it, for the outputs: the simulation itself on one
+    /// process; on several, the mirror on rank 0 after the ranks' state is gathered into it
+    /// (collective: every rank calls it at the same point; the other ranks get their own
+    /// block, which they do not write).
+    const Simulation<Dim>& gathered();
+    /// Whether this process writes the run's files.
+    [[nodiscard]] bool is_writer() const noexcept { return ranks_.rank() == 0; }
 
     CaseConfig config_;
+    Communicator ranks_;
     Simulation<Dim> sim_;
+    /// On several ranks: the case's grid on one process, and on rank 0 the run's mirror.
+    std::unique_ptr<MacGrid<Dim>> whole_grid_;
+    std::unique_ptr<Simulation<Dim>> mirror_;
     std::filesystem::path directory_;
     RunMonitor& monitor_;
     RunOutputs<Dim> outputs_;

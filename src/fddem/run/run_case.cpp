@@ -8,6 +8,9 @@
 #include "fddem/io/run_lock.hpp"
 #include "fddem/run/memory_estimate.hpp"
 
+#include <fmt/format.h>
+
+#include <optional>
 #include <system_error>
 
 namespace fddem {
@@ -19,32 +22,50 @@ namespace {
 /// `go(driver)` with the driver of the case's dimension.
 template <class Go>
 RunResult drive(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
-                const Go& go)
+                const Communicator& ranks, const Go& go)
 {
     // Before anything is allocated: a grid that does not fit stops here (exit status 2).
     check_run_memory(config, run_memory_limit(config));
     if (config.domain.dimension == 2) {
-        Driver<2> driver(config, directory, monitor);
+        Driver<2> driver(config, directory, monitor, ranks);
         return go(driver);
     }
-    Driver<3> driver(config, directory, monitor);
+    Driver<3> driver(config, directory, monitor, ranks);
     return go(driver);
 }
 
 } // namespace
 
 RunResult run_case(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
-                   bool overwrite)
+                   bool overwrite, const Communicator& ranks)
 {
-    std::error_code error;
-    if (fs::is_directory(directory, error)) {
-        check_unlocked(directory); // before "not empty": the process that holds it is the news
+    // Rank 0 alone checks (and then writes) the directory: its lock is tried by one process.
+    if (ranks.rank() == 0) {
+        std::error_code error;
+        if (fs::is_directory(directory, error)) {
+            check_unlocked(directory); // before "not empty": the holder of the lock is the news
+        }
+        check_run_directory(directory, overwrite);
     }
-    check_run_directory(directory, overwrite);
-    return drive(config, directory, monitor, [&](auto& driver) {
-        const RunLock lock(directory);
+    return drive(config, directory, monitor, ranks, [&](auto& driver) {
+        std::optional<RunLock> lock;
+        if (ranks.rank() == 0) {
+            lock.emplace(directory);
+        }
         return driver.start(overwrite);
     });
+}
+
+void check_restart_ranks(const fs::path& directory, int n_processes)
+{
+    if (n_processes > 1) {
+        throw InputError(directory.string(), 0, "",
+                         fmt::format("a restart on more than one MPI process (got {}) is not "
+                                     "supported yet (issue 15); continue the run with one "
+                                     "process: the checkpoints of a run on several are "
+                                     "one-process checkpoints",
+                                     n_processes));
+    }
 }
 
 CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::string>& overrides)
@@ -71,11 +92,12 @@ CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::s
 }
 
 RunResult restart_run(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
-                      bool rewrite_case)
+                      bool rewrite_case, const Communicator& ranks)
 {
+    check_restart_ranks(directory, ranks.size());
     const RunLock lock(directory);
     check_run_directory_writable(directory);
-    return drive(config, directory, monitor,
+    return drive(config, directory, monitor, ranks,
                  [rewrite_case](auto& driver) { return driver.resume(rewrite_case); });
 }
 

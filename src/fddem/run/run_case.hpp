@@ -5,6 +5,7 @@
 /// how the run ended. Progress, messages and interrupts go through the caller's RunMonitor; bad
 /// input throws InputError before anything is written, an unwritable file OutputError.
 
+#include "fddem/grid/communicator.hpp"
 #include "fddem/run/driver.hpp"
 #include "fddem/run/run_monitor.hpp"
 #include "fddem/simulation/case_config.hpp"
@@ -20,9 +21,14 @@ namespace fddem {
 /// not hold files, unless `overwrite`: then the old run's outputs are removed, and nothing else),
 /// the initial outputs written, and the case stepped to its end with outputs and checkpoints on
 /// their schedule. A numerical failure stops the run at the last good step, with its outputs
-/// closed and a checkpoint of it; so does an interrupt from the monitor.
+/// closed and a checkpoint of it; so does an interrupt from the monitor. On several `ranks`
+/// the grid is split over them and rank 0 writes (Driver).
 RunResult run_case(const CaseConfig& config, const std::filesystem::path& directory,
-                   RunMonitor& monitor, bool overwrite = false);
+                   RunMonitor& monitor, bool overwrite = false,
+                   const Communicator& ranks = Communicator::self());
+
+/// Throws InputError (naming `directory`) if a restart is asked of more than one process.
+void check_restart_ranks(const std::filesystem::path& directory, int n_processes);
 
 /// The case of the run in `directory`, to continue it: its case.toml read with `overrides`
 /// (section.key=value, as --set). Throws InputError if `directory` is not a run directory or
@@ -36,7 +42,9 @@ RunResult run_case(const CaseConfig& config, const std::filesystem::path& direct
 /// stepped to its end as run_case does. With `rewrite_case` (the case was changed by
 /// overrides), case.toml is written anew. A run already at the end of its case is left as it
 /// is (`completed`).
+/// One process only: a restart on several ranks is refused (InputError; not built yet).
 RunResult restart_run(const CaseConfig& config, const std::filesystem::path& directory,
-                      RunMonitor& monitor, bool rewrite_case = false);
+                      RunMonitor& monitor, bool rewrite_case = false,
+                      const Communicator& ranks = Communicator::self());
 
 } // namespace fddem

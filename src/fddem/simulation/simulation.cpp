@@ -18,8 +18,8 @@
 namespace fddem {
 
 template <int Dim>
-Simulation<Dim>::Simulation(const CaseConfig& config)
-    : config_(config), grid_(make_grid<Dim>(config)),
+Simulation<Dim>::Simulation(const CaseConfig& config, const Communicator& ranks)
+    : config_(config), grid_(make_grid<Dim>(config, ranks)),
       bc_(make_boundary_conditions<Dim>(config)), properties_{config.fluid.density,
                                                               config.fluid.viscosity},
       state_(grid_),

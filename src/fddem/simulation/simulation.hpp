@@ -40,7 +40,8 @@ template <int Dim>
 class Simulation {
 public:
     /// Builds the run from a checked case. Throws InputError if the case's dimension is not Dim.
-    explicit Simulation(const CaseConfig& config);
+    /// On `ranks` (more than one process: the grid split over them, make_grid).
+    explicit Simulation(const CaseConfig& config, const Communicator& ranks = Communicator::self());
     // Its stages hold references to its members.
     Simulation(const Simulation&) = delete;
     Simulation& operator=(const Simulation&) = delete;

@@ -3,6 +3,7 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/markers.hpp"
+#include "fddem/grid/grid_partition.hpp"
 #include "fddem/simulation/contact_model_input.hpp"
 
 #include <fmt/format.h>
@@ -13,7 +14,7 @@
 namespace fddem {
 
 template <int Dim>
-MacGrid<Dim> make_grid(const CaseConfig& config)
+MacGrid<Dim> make_grid(const CaseConfig& config, const Communicator& ranks)
 {
     const DomainConfig& domain = config.domain;
     if (domain.dimension != Dim || domain.size.size() != static_cast<std::size_t>(Dim) ||
@@ -35,7 +36,20 @@ MacGrid<Dim> make_grid(const CaseConfig& config)
         }
         is_periodic[k] = k < domain.periodic.size() && domain.periodic[k];
     }
-    return MacGrid<Dim>(cells, origin, length, is_periodic);
+    if (ranks.size() == 1) {
+        return MacGrid<Dim>(cells, origin, length, is_periodic);
+    }
+    if (!config.bodies.empty()) {
+        throw InputError(config.source_file, 0, "bodies",
+                         fmt::format("the case has {} {}, and bodies on a grid split over "
+                                     "{} MPI ranks are not supported yet (issue 15: only the "
+                                     "fluid is split so far); run it as one process",
+                                     config.bodies.size(),
+                                     config.bodies.size() == 1 ? "body" : "bodies", ranks.size()));
+    }
+    return MacGrid<Dim>(cells, origin, length, is_periodic,
+                        partition_grid<Dim>(ranks, cells, is_periodic,
+                                            choose_rank_layout<Dim>(cells, ranks.size())));
 }
 
 template <int Dim>
@@ -186,7 +200,7 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
 }
 
 #define FDDEM_INSTANTIATE_SETUP(DIM)                                                               \
-    template MacGrid<DIM> make_grid<DIM>(const CaseConfig&);                                       \
+    template MacGrid<DIM> make_grid<DIM>(const CaseConfig&, const Communicator&);                  \
     template BoundaryConditions<DIM> make_boundary_conditions<DIM>(const CaseConfig&);             \
     template Vec<DIM> vector_of<DIM>(const std::vector<double>&);                                  \
     template AngularVec<DIM> angular_of<DIM>(const std::vector<double>&);                          \

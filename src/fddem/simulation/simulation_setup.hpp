@@ -13,9 +13,13 @@
 
 namespace fddem {
 
-/// The case's grid. Throws InputError if the case is not Dim-dimensional.
+/// The case's grid, split over `ranks` (grid/grid_partition.hpp: the layout with the least
+/// interface area) if they are more than one process. Throws InputError if the case is not
+/// Dim-dimensional, if the blocks would be too thin, or if the case has bodies and the grid is
+/// split (particles across ranks are not built yet: issue 15).
 template <int Dim>
-[[nodiscard]] MacGrid<Dim> make_grid(const CaseConfig& config);
+[[nodiscard]] MacGrid<Dim> make_grid(const CaseConfig& config,
+                                     const Communicator& ranks = Communicator::self());
 
 template <int Dim>
 [[nodiscard]] BoundaryConditions<Dim> make_boundary_conditions(const CaseConfig& config);

@@ -23,6 +23,32 @@ double max_speed(const MacGrid<Dim>& grid, const FaceField<Dim>& u)
     return result;
 }
 
+/// The place of `c` in `box`'s storage order (x fastest), as a double (exact below 2^53).
+template <int Dim>
+double order_in(const Box<Dim>& box, const Index<Dim>& c)
+{
+    double order = 0.0;
+    for (int d = Dim - 1; d >= 0; --d) {
+        const auto sd = static_cast<std::size_t>(d);
+        order = order * box.extent(d) + (c[sd] - box.lo[sd]);
+    }
+    return order;
+}
+
+/// The index at place `order` of `box`'s storage order: the inverse of order_in.
+template <int Dim>
+Index<Dim> index_in(const Box<Dim>& box, double order)
+{
+    auto rest = static_cast<long long>(order);
+    Index<Dim> c{};
+    for (int d = 0; d < Dim; ++d) {
+        const auto sd = static_cast<std::size_t>(d);
+        c[sd] = box.lo[sd] + static_cast<int>(rest % box.extent(d));
+        rest /= box.extent(d);
+    }
+    return c;
+}
+
 } // namespace
 
 template <int Dim>
@@ -74,45 +100,62 @@ StepChange measure_change(const MacGrid<Dim>& grid, const FluidState<Dim>& state
 template <int Dim>
 std::string locate_non_finite(const MacGrid<Dim>& grid, const FluidState<Dim>& state)
 {
-    // The first non-finite value in storage order (serial) of a field, at `where`'s position.
-    const auto first_in = [&](const GridArray<Dim>& field, const Box<Dim>& box, auto where,
-                              const std::string& name) -> std::optional<std::string> {
-        std::optional<Index<Dim>> found;
-        for_each_cell_in_vtk_order(box, [&](const Index<Dim>& c) {
-            if (!found && !std::isfinite(field(c))) {
-                found = c;
+    // Every rank searches the entries it owns; the one first in the whole array's storage
+    // order (x fastest) wins, through its index in that order, which every rank can turn back
+    // into a position: the message is the one-process message, on every rank.
+    const Communicator& ranks = grid.communicator();
+    const double none = std::numeric_limits<double>::infinity();
+    const auto lowest = [&](double local) { return -ranks.max(-local); };
+    // The first entry of `owned` (in the order of `whole`) where `is_found`, over the ranks.
+    const auto first_where = [&](const Box<Dim>& whole, const Box<Dim>& owned,
+                                 auto is_found) -> std::optional<Index<Dim>> {
+        double first = none;
+        for_each_cell_in_vtk_order(owned, [&](const Index<Dim>& c) {
+            if (is_found(c)) {
+                first = std::min(first, order_in<Dim>(whole, c));
             }
         });
-        if (!found) {
+        first = lowest(first);
+        if (first == none) {
             return std::nullopt;
         }
-        return fmt::format("{} not finite at ({:.6g})", name, fmt::join(where(*found), ", "));
+        return index_in<Dim>(whole, first);
+    };
+    const auto non_finite = [](const GridArray<Dim>& field) {
+        return [&field](const Index<Dim>& c) { return !std::isfinite(field(c)); };
     };
     for (int a = 0; a < Dim; ++a) {
-        const auto face = [&](const Index<Dim>& c) { return grid.face_centre(a, c); };
-        if (auto at = first_in(state.u[a], grid.face_box(a), face,
-                               fmt::format("velocity component {}", a))) {
-            return *at;
+        const Box<Dim> whole = grid.face_box(a);
+        const Box<Dim> owned = grid.owned_faces(a);
+        const auto at = [&](const Index<Dim>& c) {
+            return fmt::format("({:.6g})", fmt::join(grid.face_centre(a, c), ", "));
+        };
+        if (auto c = first_where(whole, owned, non_finite(state.u[a]))) {
+            return fmt::format("velocity component {} not finite at {}", a, at(*c));
         }
-        if (auto at = first_in(state.body_force[a], grid.face_box(a), face,
-                               fmt::format("body force component {} (the markers' λ)", a))) {
-            return *at;
+        if (auto c = first_where(whole, owned, non_finite(state.body_force[a]))) {
+            return fmt::format("body force component {} (the markers' λ) not finite at {}", a,
+                               at(*c));
         }
     }
-    const auto cell = [&](const Index<Dim>& c) { return grid.cell_centre(c); };
-    if (auto at = first_in(state.p, grid.cell_box(), cell, "pressure")) {
-        return *at;
+    if (auto c = first_where(grid.cell_box(), grid.owned_cells(), non_finite(state.p))) {
+        return fmt::format("pressure not finite at ({:.6g})",
+                           fmt::join(grid.cell_centre(*c), ", "));
     }
-    // All finite: a residual overflowed. Where is the fastest fluid?
+    // All finite: a residual overflowed. Where is the fastest fluid (the first such face)?
     double fastest = 0.0;
     std::string where;
     for (int a = 0; a < Dim; ++a) {
-        for_each_cell_in_vtk_order(grid.face_box(a), [&](const Index<Dim>& c) {
-            if (std::abs(state.u[a](c)) > fastest) {
-                fastest = std::abs(state.u[a](c));
-                where = fmt::format("{:.6g}", fmt::join(grid.face_centre(a, c), ", "));
-            }
-        });
+        const GridArray<Dim>& ua = state.u[a];
+        const double largest = max_over(ranks, grid.owned_faces(a),
+                                        [&](const Index<Dim>& c) { return std::abs(ua(c)); });
+        if (largest <= fastest) {
+            continue;
+        }
+        fastest = largest;
+        const auto c = first_where(grid.face_box(a), grid.owned_faces(a),
+                                   [&](const Index<Dim>& i) { return std::abs(ua(i)) == largest; });
+        where = fmt::format("{:.6g}", fmt::join(grid.face_centre(a, *c), ", "));
     }
     if (where.empty()) {
         return "the momentum residual is not finite, with the velocity, the body force and the "

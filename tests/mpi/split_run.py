@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""`mpirun -n N fddem run CASE` against `fddem run CASE` on one process (issue 15).
+
+    split_run.py FDDEM MPIEXEC N WORK_DIR
+
+For a 2D cavity and a 3D channel (the fluid alone), the run on N processes must write what the
+one-process run writes: solver.csv step by step (the same steps, step sizes and outer
+iterations; the residuals, which sit near the tolerance, to 1e-8 relative), the line samples to
+1e-10 of their largest value, the same field frames, and a checkpoint from which one process
+continues the split run as it continues its own. Then the bad input of a split run: a case
+with a body and a restart on N processes each end with exit status 2, one message, and nothing
+written. The pressure is solved by hypre in both (auto would take the FFT solver on one
+process). Exit status 0 if all holds, 1 with the first difference otherwise.
+"""
+
+import csv
+import pathlib
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+COMMON = ["--set", "simple.pressure_solver=hypre", "--set", "simple.linear_tolerance=1e-13",
+          "--set", "simple.linear_max_iterations=2000"]
+
+CASES = pathlib.Path(__file__).resolve().parent / "cases"
+CAVITY = (CASES / "cavity.toml").read_text()
+CHANNEL = (CASES / "channel.toml").read_text()
+
+DISK = CAVITY + """
+[[bodies]]
+shape = "disk"
+diameter = 0.2
+density = 2.0
+position = [0.5, 0.5]
+"""
+
+
+def table(path):
+    rows = list(csv.reader(open(path)))
+    return rows[0], np.array([[float(x) for x in row] for row in rows[1:]])
+
+
+def run(command, expect):
+    result = subprocess.run(command, capture_output=True, text=True)
+    if result.returncode != expect:
+        sys.exit(f"{' '.join(command)}: exit {result.returncode} (expected {expect})\n"
+                 f"{result.stderr}")
+    return result
+
+
+def compare(one, split, name):
+    head, a = table(one / "solver.csv")
+    head_split, b = table(split / "solver.csv")
+    if head != head_split or a.shape != b.shape:
+        sys.exit(f"{name}: solver.csv has {a.shape} rows/columns, the split run {b.shape}")
+    for k, column in enumerate(head):
+        tolerance = {"wall_seconds": None, "mass_residual": 1e-8,
+                     "momentum_residual": 1e-8}.get(column, 1e-12)
+        if tolerance is None:
+            continue
+        scale = max(np.abs(a[:, k]).max(), 1e-300)
+        worst = np.abs(a[:, k] - b[:, k]).max() / scale
+        if worst > tolerance:
+            sys.exit(f"{name}: solver.csv column {column} differs by {worst:.2e} (relative)")
+    for sample in sorted((one / "samples").glob("*.csv")):
+        head, a = table(sample)
+        _, b = table(split / "samples" / sample.name)
+        worst = max(np.abs(a[:, k] - b[:, k]).max() / max(np.abs(a[:, k]).max(), 1e-300)
+                    for k in range(a.shape[1]))
+        print(f"{name}: samples/{sample.name}: largest relative difference {worst:.2e}")
+        if worst > 1e-10:
+            sys.exit(f"{name}: samples/{sample.name} differs by {worst:.2e} (relative)")
+    frames = sorted(p.name for p in (one / "fields").glob("*.vtr"))
+    if frames != sorted(p.name for p in (split / "fields").glob("*.vtr")) or len(frames) < 2:
+        sys.exit(f"{name}: field frames {frames} against the split run's")
+    if (one / "fields.pvd").read_text() != (split / "fields.pvd").read_text():
+        sys.exit(f"{name}: fields.pvd differs")
+
+
+def main():
+    fddem, mpiexec, n, work = sys.argv[1], sys.argv[2], sys.argv[3], pathlib.Path(sys.argv[4])
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    split = [mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", n, fddem]
+    for name, text, end in (("cavity", CAVITY, "0.5"), ("channel", CHANNEL, "0.4")):
+        case = work / f"{name}.toml"
+        case.write_text(text)
+        one, many = work / f"{name}_one", work / f"{name}_split"
+        run([fddem, "run", str(case), "-o", str(one), "--quiet"] + COMMON, 0)
+        run(split + ["run", str(case), "-o", str(many), "--quiet"] + COMMON, 0)
+        compare(one, many, f"{name} on {n} processes")
+        # One process continues either run the same way.
+        for directory in (one, many):
+            run([fddem, "run", "--restart", str(directory), "--quiet", "--set",
+                 f"time.end={end}"], 0)
+        compare(one, many, f"{name} continued on one process")
+    # Bad input on several processes: exit 2, said once, nothing written.
+    if int(n) > 1:
+        disk = work / "disk.toml"
+        disk.write_text(DISK)
+        result = run(split + ["run", str(disk), "-o", str(work / "disk_run")], 2)
+        said = [line for line in result.stderr.splitlines() if line.startswith("fddem:")]
+        if len(said) != 1 or "bodies" not in said[0] or (work / "disk_run").exists():
+            sys.exit(f"a case with a body on {n} processes: {result.stderr}")
+        before = (work / "cavity_split" / "solver.csv").read_bytes()
+        result = run(split + ["run", "--restart", str(work / "cavity_split")], 2)
+        said = [line for line in result.stderr.splitlines() if line.startswith("fddem:")]
+        if len(said) != 1 or "restart on more than one MPI process" not in said[0]:
+            sys.exit(f"a restart on {n} processes: {result.stderr}")
+        if (work / "cavity_split" / "solver.csv").read_bytes() != before:
+            sys.exit("a refused restart changed solver.csv")
+    print(f"split runs on {n} processes match the one-process runs")
+
+
+if __name__ == "__main__":
+    main()
