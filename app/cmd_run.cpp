@@ -79,23 +79,23 @@ int exit_status(const RunResult& result)
 int run_command(const RunOptions& options)
 {
     install_interrupt_handlers();
-    if (!options.restart_directory.empty()) {
-        const fs::path directory = options.restart_directory;
-        check_restart_ranks(directory, options.n_processes);
-        const CaseConfig config = read_restart_case(directory, options.overrides);
-        TerminalMonitor monitor(options, config);
-        return exit_status(
-            restart_run(config, directory, monitor, !options.overrides.empty(),
-                        options.n_processes > 1 ? Communicator::world() : Communicator::self()));
-    }
-    const CaseConfig config = read_case(options.case_file, options.overrides);
     const Communicator ranks =
         options.n_processes > 1 ? Communicator::world() : Communicator::self();
-    TerminalMonitor terminal(options, config);
     RunMonitor quiet; // the other ranks: rank 0 speaks for the run
-    RunMonitor& monitor = ranks.rank() == 0 ? static_cast<RunMonitor&>(terminal) : quiet;
-    return exit_status(
-        run_case(config, default_run_directory(options, config), monitor, options.force, ranks));
+    if (!options.restart_directory.empty()) {
+        const fs::path directory = options.restart_directory;
+        const CaseConfig config =
+            read_restart_case(directory, options.overrides, ranks.rank() == 0);
+        TerminalMonitor terminal(options, config);
+        return exit_status(restart_run(
+            config, directory, ranks.rank() == 0 ? static_cast<RunMonitor&>(terminal) : quiet,
+            !options.overrides.empty(), ranks));
+    }
+    const CaseConfig config = read_case(options.case_file, options.overrides);
+    TerminalMonitor terminal(options, config);
+    return exit_status(run_case(config, default_run_directory(options, config),
+                                ranks.rank() == 0 ? static_cast<RunMonitor&>(terminal) : quiet,
+                                options.force, ranks));
 }
 
 } // namespace fddem::app

@@ -6,10 +6,10 @@
 For a 2D cavity and a 3D channel (the fluid alone), the run on N processes must write what the
 one-process run writes: solver.csv step by step (the same steps, step sizes and outer
 iterations; the residuals, which sit near the tolerance, to 1e-8 relative), the line samples to
-1e-10 of their largest value, the same field frames, and a checkpoint from which one process
-continues the split run as it continues its own. Then the bad input of a split run: a case
-with a body and a restart on N processes each end with exit status 2, one message, and nothing
-written. The pressure is solved by hypre in both (auto would take the FFT solver on one
+1e-10 of their largest value, the same field frames; and checkpoints that continue on another
+number of processes (one process's on N, N processes' on one) as the one-process run continues.
+Then the bad input of a split run: a case with a body, a restart of a directory that does not
+exist and one from a damaged checkpoint, each end with exit status 2 and one message. The pressure is solved by hypre in both (auto would take the FFT solver on one
 process). Exit status 0 if all holds, 1 with the first difference otherwise.
 """
 
@@ -91,11 +91,16 @@ def main():
         run([fddem, "run", str(case), "-o", str(one), "--quiet"] + COMMON, 0)
         run(split + ["run", str(case), "-o", str(many), "--quiet"] + COMMON, 0)
         compare(one, many, f"{name} on {n} processes")
-        # One process continues either run the same way.
-        for directory in (one, many):
-            run([fddem, "run", "--restart", str(directory), "--quiet", "--set",
-                 f"time.end={end}"], 0)
-        compare(one, many, f"{name} continued on one process")
+        # Checkpoints across process counts: the one-process run continued on N processes and
+        # the N-process run continued on one must both continue as the one-process run does.
+        crossed = work / f"{name}_one_then_split"
+        shutil.copytree(one, crossed)
+        extend = ["--quiet", "--set", f"time.end={end}"]
+        run([fddem, "run", "--restart", str(one)] + extend, 0)
+        run(split + ["run", "--restart", str(crossed)] + extend, 0)
+        run([fddem, "run", "--restart", str(many)] + extend, 0)
+        compare(one, crossed, f"{name}: one process, continued on {n}")
+        compare(one, many, f"{name}: {n} processes, continued on one")
     # Bad input on several processes: exit 2, said once, nothing written.
     if int(n) > 1:
         disk = work / "disk.toml"
@@ -104,13 +109,18 @@ def main():
         said = [line for line in result.stderr.splitlines() if line.startswith("fddem:")]
         if len(said) != 1 or "bodies" not in said[0] or (work / "disk_run").exists():
             sys.exit(f"a case with a body on {n} processes: {result.stderr}")
-        before = (work / "cavity_split" / "solver.csv").read_bytes()
-        result = run(split + ["run", "--restart", str(work / "cavity_split")], 2)
+        result = run(split + ["run", "--restart", str(work / "nowhere")], 2)
         said = [line for line in result.stderr.splitlines() if line.startswith("fddem:")]
-        if len(said) != 1 or "restart on more than one MPI process" not in said[0]:
-            sys.exit(f"a restart on {n} processes: {result.stderr}")
-        if (work / "cavity_split" / "solver.csv").read_bytes() != before:
-            sys.exit("a refused restart changed solver.csv")
+        if len(said) != 1 or "no such run directory" not in said[0]:
+            sys.exit(f"a restart of a missing directory on {n} processes: {result.stderr}")
+        damaged = work / "damaged"
+        (damaged / "checkpoints").mkdir(parents=True)
+        (damaged / "case.toml").write_text(CAVITY)
+        (damaged / "checkpoints" / "checkpoint_0000000010.ckpt").write_text("garbage\n")
+        result = run(split + ["run", "--restart", str(damaged)], 2)
+        said = [line for line in result.stderr.splitlines() if line.startswith("fddem:")]
+        if len(said) != 1 or "no usable checkpoint" not in said[0]:
+            sys.exit(f"a restart from a damaged checkpoint on {n} processes: {result.stderr}")
     print(f"split runs on {n} processes match the one-process runs")
 
 

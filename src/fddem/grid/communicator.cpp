@@ -137,6 +137,23 @@ void Communicator::sum(std::span<double> values) const
     }
 }
 
+void Communicator::broadcast(std::string& bytes) const
+{
+    if (!mpi_) {
+        return;
+    }
+    auto size = static_cast<unsigned long long>(bytes.size());
+    check(MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, mpi_->comm), "MPI_Bcast");
+    bytes.resize(static_cast<std::size_t>(size));
+    // In pieces below MPI's int count limit.
+    constexpr std::size_t piece = std::size_t{1} << 30;
+    for (std::size_t start = 0; start < bytes.size(); start += piece) {
+        const std::size_t count = std::min(piece, bytes.size() - start);
+        check(MPI_Bcast(bytes.data() + start, static_cast<int>(count), MPI_CHAR, 0, mpi_->comm),
+              "MPI_Bcast");
+    }
+}
+
 void Communicator::exchange(std::span<const double> send, int destination,
                             std::span<double> receive, int source, int tag) const
 {

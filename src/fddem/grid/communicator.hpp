@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <span>
+#include <string>
 #include <utility>
 
 namespace fddem {
@@ -49,6 +50,9 @@ public:
     [[nodiscard]] double sum(double local) const;
     /// Element-wise sums over the ranks, in place (one message for several totals).
     void sum(std::span<double> values) const;
+
+    /// Rank 0's `bytes` on every rank (MPI_Bcast): a restarted run's state, read by rank 0.
+    void broadcast(std::string& bytes) const;
 
     /// Sends `send` to rank `destination` and receives `receive` from rank `source` in one
     /// step (MPI_Sendrecv), so that a ring of such calls cannot deadlock. Either rank may be

@@ -8,6 +8,7 @@
 #include "fddem/io/case_changes.hpp"
 #include "fddem/io/checkpoint.hpp"
 #include "fddem/io/checkpoint_files.hpp"
+#include "fddem/io/gathering_archive.hpp"
 #include "fddem/run/driver.hpp"
 #include "fddem/run/field_frames.hpp"
 #include "fddem/run/memory_estimate.hpp"
@@ -57,15 +58,46 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
     std::vector<Damaged> damaged;
     std::optional<CheckpointEntry> used;
     std::string checkpoint_case;
-    for (const CheckpointEntry& entry : list_checkpoints(directory_)) {
-        try {
-            const CheckpointFile file(entry.path);
-            file.restore(sim_, record_);
-            used = entry;
-            checkpoint_case = file.header().case_text;
-            break;
-        } catch (const CheckpointError& e) {
-            damaged.push_back({entry.path, e.what()});
+    // On several ranks rank 0 reads the checkpoint (a one-process state) into its mirror and
+    // hands it to the ranks, each of which keeps its block (io/gathering_archive.hpp).
+    Simulation<Dim>& reader = mirror_ ? *mirror_ : sim_;
+    if (is_writer()) {
+        for (const CheckpointEntry& entry : list_checkpoints(directory_)) {
+            try {
+                const CheckpointFile file(entry.path);
+                file.restore(reader, record_);
+                used = entry;
+                checkpoint_case = file.header().case_text;
+                break;
+            } catch (const CheckpointError& e) {
+                damaged.push_back({entry.path, e.what()});
+            }
+        }
+    }
+    if (whole_grid_) {
+        // (A rank-0 error below ends every rank: app/main.cpp.)
+        std::string bytes;
+        if (used) {
+            ArchiveWriter writer;
+            reader.save_state(writer);
+            writer("record", std::as_const(record_));
+            bytes = std::move(writer.bytes());
+        }
+        ranks_.broadcast(bytes);
+        if (bytes.empty()) {
+            if (!is_writer()) {
+                // No usable checkpoint: rank 0 says why below and ends every rank.
+                return {RunResult::Outcome::completed, 0};
+            }
+        } else {
+            ArchiveReader in(bytes);
+            BlockReader<Dim> block(sim_.grid(), *whole_grid_, in);
+            sim_.load_state(block);
+            if (!is_writer()) {
+                block("record", record_);
+                // The other ranks step along; rank 0 checks and prepares the run directory.
+                return sim_.is_finished(record_.last) ? RunResult{} : step_to_end();
+            }
         }
     }
     if (!used) {

@@ -56,19 +56,8 @@ RunResult run_case(const CaseConfig& config, const fs::path& directory, RunMonit
     });
 }
 
-void check_restart_ranks(const fs::path& directory, int n_processes)
-{
-    if (n_processes > 1) {
-        throw InputError(directory.string(), 0, "",
-                         fmt::format("a restart on more than one MPI process (got {}) is not "
-                                     "supported yet (issue 15); continue the run with one "
-                                     "process: the checkpoints of a run on several are "
-                                     "one-process checkpoints",
-                                     n_processes));
-    }
-}
-
-CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::string>& overrides)
+CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::string>& overrides,
+                             bool check_lock)
 {
     std::error_code error;
     if (!fs::is_directory(directory, error)) {
@@ -81,7 +70,9 @@ CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::s
         throw InputError(case_file.string(), 0, "",
                          "cannot restart: missing (not an fddem run directory?)");
     }
-    check_unlocked(directory);
+    if (check_lock) {
+        check_unlocked(directory);
+    }
     CaseConfig config = read_case(case_file.string(), overrides);
     if (list_checkpoints(directory).empty()) {
         throw InputError(checkpoint_directory(directory).string(), 0, "",
@@ -94,9 +85,11 @@ CaseConfig read_restart_case(const fs::path& directory, const std::vector<std::s
 RunResult restart_run(const CaseConfig& config, const fs::path& directory, RunMonitor& monitor,
                       bool rewrite_case, const Communicator& ranks)
 {
-    check_restart_ranks(directory, ranks.size());
-    const RunLock lock(directory);
-    check_run_directory_writable(directory);
+    std::optional<RunLock> lock;
+    if (ranks.rank() == 0) {
+        lock.emplace(directory);
+        check_run_directory_writable(directory);
+    }
     return drive(config, directory, monitor, ranks,
                  [rewrite_case](auto& driver) { return driver.resume(rewrite_case); });
 }

@@ -27,14 +27,13 @@ RunResult run_case(const CaseConfig& config, const std::filesystem::path& direct
                    RunMonitor& monitor, bool overwrite = false,
                    const Communicator& ranks = Communicator::self());
 
-/// Throws InputError (naming `directory`) if a restart is asked of more than one process.
-void check_restart_ranks(const std::filesystem::path& directory, int n_processes);
-
 /// The case of the run in `directory`, to continue it: its case.toml read with `overrides`
 /// (section.key=value, as --set). Throws InputError if `directory` is not a run directory or
-/// has no checkpoint.
+/// has no checkpoint, or (`check_lock`: one process of those running it) if another process
+/// holds the directory.
 [[nodiscard]] CaseConfig read_restart_case(const std::filesystem::path& directory,
-                                           const std::vector<std::string>& overrides);
+                                           const std::vector<std::string>& overrides,
+                                           bool check_lock = true);
 
 /// Continues the run in `directory` (`fddem run --restart`) with `config` (read_restart_case):
 /// the directory locked and checked writable, the memory estimate said, before any work; its
@@ -42,7 +41,8 @@ void check_restart_ranks(const std::filesystem::path& directory, int n_processes
 /// stepped to its end as run_case does. With `rewrite_case` (the case was changed by
 /// overrides), case.toml is written anew. A run already at the end of its case is left as it
 /// is (`completed`).
-/// One process only: a restart on several ranks is refused (InputError; not built yet).
+/// On several `ranks`, rank 0 reads the checkpoint and hands each rank its block: a run
+/// continues on any number of processes (Driver::resume).
 RunResult restart_run(const CaseConfig& config, const std::filesystem::path& directory,
                       RunMonitor& monitor, bool rewrite_case = false,
                       const Communicator& ranks = Communicator::self());
