@@ -102,7 +102,7 @@ def main():
     ax.set_xscale("log")
     ax.set_xlabel("St = ρp v_in d / (9 μ)")
     ax.set_ylabel("e_eff / e_dry")
-    ax.set_ylim(-0.05, 1.05)
+    ax.set_ylim(-0.05, 1.12)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(loc="upper left", fontsize=8)
     ax.set_title("Sphere–wall rebound in a viscous fluid: effective restitution against St")

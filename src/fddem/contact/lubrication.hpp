@@ -37,8 +37,8 @@
 /// While the surfaces overlap (h ≤ 0, the contact model acting) the correction is switched off
 /// by default (LubricationInContact::off): the film has been squeezed out, and the contact
 /// model's damping, set for the dry restitution, already stands for the dissipation of the solid
-/// contact. This is the split of Costa et al. (2015, PRE 92, 053012: the correction "is applied
-/// until the particles reach solid-solid contact"), of Kempe & Fröhlich (2012) and Biegert,
+/// contact. This is the split of Costa et al. (2015, PRE 92, 053012: the correction acts until
+/// the solid surfaces touch), of Kempe & Fröhlich (2012) and Biegert,
 /// Vowinckel & Meiburg (2017, JCP 340, eq. 5: lubrication for 0 < ζ_n ≤ 2h, contact for
 /// ζ_n ≤ 0) and of waLBerla's lubrication correction (Rettinger & Rüde 2022: none for negative
 /// gaps). `saturated` keeps it at c(h_σ) through the overlap, fddem's former behaviour: with a
