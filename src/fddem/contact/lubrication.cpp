@@ -66,6 +66,9 @@ LubricationResistance lubrication_correction(double gap, double radius, double o
     if (!settings.is_enabled || gap >= settings.range || roughness >= settings.range) {
         return {};
     }
+    if (gap <= 0.0 && settings.in_contact == LubricationInContact::off) {
+        return {}; // in contact: the contact model alone (Costa et al. 2015)
+    }
     const LubricationResistance near = lubrication_resistance<Dim>(
         std::max(gap, roughness), radius, other_radius, settings.viscosity);
     const LubricationResistance far =

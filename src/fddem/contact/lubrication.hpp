@@ -31,10 +31,27 @@
 /// activation distance h_Δ (`range`), so only the part it misses is added:
 ///   c_corr(h) = c(max(h, h_σ)) − c(h_Δ)  for h < h_Δ,   0 for h ≥ h_Δ,
 /// which vanishes continuously at h_Δ and is held at its value at the roughness length h_σ
-/// below it (also while the bodies overlap), where asperities touch (Breugem 2012 holds it at
-/// a roughness length in the same way).
+/// for 0 < h < h_σ, where asperities touch (Breugem 2012, Costa et al. 2015 hold it at a
+/// roughness length in the same way).
+///
+/// While the surfaces overlap (h ≤ 0, the contact model acting) the correction is switched off
+/// by default (LubricationInContact::off): the film has been squeezed out, and the contact
+/// model's damping, set for the dry restitution, already stands for the dissipation of the solid
+/// contact. This is the split of Costa et al. (2015, PRE 92, 053012: the correction acts until
+/// the solid surfaces touch), of Kempe & Fröhlich (2012) and Biegert,
+/// Vowinckel & Meiburg (2017, JCP 340, eq. 5: lubrication for 0 < ζ_n ≤ 2h, contact for
+/// ζ_n ≤ 0) and of waLBerla's lubrication correction (Rettinger & Rüde 2022: none for negative
+/// gaps). `saturated` keeps it at c(h_σ) through the overlap, fddem's former behaviour: with a
+/// collision stretched over N_c fluid steps it removes most of the impact energy
+/// (docs/method.md §5, "Gondret's rebound").
 
 namespace fddem {
+
+/// What the correction does while the surfaces overlap (lubrication.in_contact).
+enum class LubricationInContact {
+    off,       ///< zero for h ≤ 0: the contact model alone acts (Costa et al. 2015)
+    saturated, ///< held at c(h_σ), as for 0 < h < h_σ
+};
 
 /// [lubrication] of a case, in SI units as the DEM uses it.
 struct LubricationSettings {
@@ -42,6 +59,7 @@ struct LubricationSettings {
     double viscosity = 0.0;  ///< μ [Pa·s]
     double range = 0.0;      ///< activation gap h_Δ [m] (the case gives it in grid spacings)
     double roughness = 1e-3; ///< h_σ as a fraction of the smaller radius
+    LubricationInContact in_contact = LubricationInContact::off; ///< while overlapping
 };
 
 /// Resistance coefficients of one gap [N·s/m] (2D: per unit length).
@@ -57,8 +75,9 @@ template <int Dim>
 [[nodiscard]] LubricationResistance lubrication_resistance(double gap, double radius,
                                                            double other_radius, double viscosity);
 
-/// The Breugem correction c(max(h, h_σ)) − c(h_Δ) for h < h_Δ, else 0 (h ≤ 0: overlapping,
-/// held at h_σ). h_σ = settings.roughness × the smaller radius.
+/// The Breugem correction c(max(h, h_σ)) − c(h_Δ) for h < h_Δ, else 0. h ≤ 0 (overlapping):
+/// 0, or held at h_σ if settings.in_contact is `saturated`. h_σ = settings.roughness × the
+/// smaller radius.
 template <int Dim>
 [[nodiscard]] LubricationResistance lubrication_correction(double gap, double radius,
                                                            double other_radius,

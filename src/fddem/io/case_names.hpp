@@ -94,6 +94,11 @@ constexpr auto case_names(ContactCoupling /*tag*/)
     using enum ContactCoupling;
     return std::to_array<EnumName<ContactCoupling>>({{additive, "additive"}, {paper, "paper"}});
 }
+constexpr auto case_names(LubricationInContact /*tag*/)
+{
+    using enum LubricationInContact;
+    return std::to_array<EnumName<LubricationInContact>>({{off, "off"}, {saturated, "saturated"}});
+}
 /// The contact models by the names of their registry (contact/contact_models.cpp).
 [[nodiscard]] std::vector<EnumName<ContactModelKind>> case_names(ContactModelKind /*tag*/);
 

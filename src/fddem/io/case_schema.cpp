@@ -555,11 +555,19 @@ std::vector<KeySpec> case_schema()
     s.push_back(
         bound(ranged(key("lubrication", "roughness", T::real, none, "0.001",
                          "Saturation gap h_σ as a fraction of the smaller radius: below it "
-                         "(and while overlapping) the correction is held at its value at h_σ, "
-                         "where surface asperities touch (fddem's choice, of the order invoked "
-                         "for precision spheres; to be calibrated against restitution data)."),
+                         "the correction is held at its value at h_σ, where surface asperities "
+                         "touch (fddem's choice, of the order invoked for precision spheres; to "
+                         "be calibrated against restitution data)."),
                      0.0, 1.0, true, false),
               &CaseConfig::lubrication, &LubricationConfig::roughness));
+    s.push_back(bound(key("lubrication", "in_contact", T::string, none, "\"off\"",
+                          "The correction while the surfaces overlap: off (none; the contact "
+                          "model's damping stands for the solid contact's dissipation, the film "
+                          "being squeezed out: Costa et al. 2015, Kempe & Fröhlich 2012) or "
+                          "saturated (held at its value at the roughness, fddem's former "
+                          "behaviour; with the adaptive model's stretched collision it takes most "
+                          "of the impact energy: docs/method.md §5)."),
+                      &CaseConfig::lubrication, &LubricationConfig::in_contact));
 
     s.push_back(
         bound(positive(key("nondimensional", "reynolds", T::real, none, "none",

@@ -9,6 +9,7 @@
 #include "fddem/bodies/material.hpp"
 #include "fddem/bodies/particle.hpp"
 #include "fddem/contact/contact_models.hpp"
+#include "fddem/contact/lubrication.hpp"
 #include "fddem/coupling/delta_kernel.hpp"
 #include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/fluid/fluid_state.hpp"
@@ -186,6 +187,7 @@ struct LubricationConfig {
     bool is_enabled = false;
     double range = 2.0;      ///< activation gap h_Δ in grid spacings h (the largest spacing)
     double roughness = 1e-3; ///< saturation gap h_σ as a fraction of the smaller radius
+    LubricationInContact in_contact = LubricationInContact::off; ///< while the surfaces overlap
 };
 
 /// [nondimensional]: given, fddem derives viscosity, gravity and body densities.

@@ -44,6 +44,7 @@ TEST(CaseNames, EveryTableReadsAndWritesEachOfItsValues)
     expect_round_trip<Motion>(3);
     expect_round_trip<KernelKind>(3);
     expect_round_trip<ContactCoupling>(2);
+    expect_round_trip<LubricationInContact>(2);
     expect_round_trip<TimeScheme>(2);
     expect_round_trip<ContactModelKind>(4);
 }

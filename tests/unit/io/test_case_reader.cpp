@@ -62,6 +62,8 @@ TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
     EXPECT_EQ(c.simple.momentum_cycles, 1);
     EXPECT_EQ(name_of(c.simple.momentum_solver), "auto");
     EXPECT_EQ(name_of(c.simple.convection), "central");
+    EXPECT_FALSE(c.lubrication.is_enabled);
+    EXPECT_EQ(name_of(c.lubrication.in_contact), "off"); // the schema's documented default
     ASSERT_EQ(c.output.lines.size(), 1U);
     EXPECT_EQ(c.output.lines[0].n_points, 101);
 }
@@ -369,6 +371,20 @@ std::vector<BadCase> bad_cases()
          19,
          "simple.pressure_update",
          "did you mean 'rotational'"},
+        {"misspelt_lubrication_in_contact",
+         v + "[lubrication]\nenabled = true\nin_contact = \"saturate\"\n",
+         {},
+         f,
+         20,
+         "lubrication.in_contact",
+         "did you mean 'saturated'"},
+        {"lubrication_in_contact_not_a_word",
+         v + "[lubrication]\nin_contact = false\n",
+         {},
+         f,
+         19,
+         "lubrication.in_contact",
+         "string"},
         {"too_deep_acceleration",
          v + "[simple]\nacceleration_depth = 11\n",
          {},
@@ -1145,6 +1161,11 @@ linear_max_iterations = 33
 [coupling]
 kernel = "roma3"
 marker_spacing_ratio = 1.2
+[lubrication]
+enabled = true
+range = 1.5
+roughness = 0.01
+in_contact = "saturated"
 [output]
 directory = "somewhere"
 field_interval = 0.25
@@ -1173,6 +1194,10 @@ scheme = "bdf2"
     EXPECT_EQ(c.time.max_steps, 77);
     EXPECT_EQ(c.time.max_courant, 0.4);
     EXPECT_EQ(c.time.scheme, TimeScheme::bdf2);
+    EXPECT_TRUE(c.lubrication.is_enabled);
+    EXPECT_EQ(c.lubrication.range, 1.5);
+    EXPECT_EQ(c.lubrication.roughness, 0.01);
+    EXPECT_EQ(c.lubrication.in_contact, LubricationInContact::saturated);
     const SimpleConfig& simple = c.simple;
     EXPECT_EQ(simple.tolerance, 1e-4);
     EXPECT_EQ(simple.max_outer_iterations, 12);
