@@ -412,8 +412,10 @@ def main():
     checks = [c for c in all_checks() if (c.quick or not options.quick)
               and (options.only is None or options.only in c.name)]
     lines = ["# fddem validation report", "",
-             f"{'Quick set' if options.quick else 'Full set'}: {len(checks)} cases. "
-             "Command: `fddem validate" + (" --quick" if options.quick else "") + "`.", "",
+             f"{'Quick set' if options.quick else 'Full set'}"
+             + (f", the checks named '{options.only}'" if options.only else "") + f": {len(checks)} cases. "
+             "Command: `fddem validate" + (" --quick" if options.quick else "")
+             + (f' --only "{options.only}"' if options.only else "") + "`.", "",
              "| case | quantity | measured | reference | tolerance | pass | source and reason |",
              "| --- | --- | ---: | ---: | ---: | :---: | --- |"]
     figures = []

@@ -412,6 +412,16 @@ class SphereWake(unittest.TestCase):
         self.assertAlmostEqual(m["C_L"], 0.05, places=9)
         self.assertAlmostEqual(m["L/d"], 0.9, places=9)
         self.assertAlmostEqual(m["drift"], 0.1 * 10 / 99 / 1.1, delta=0.002)
+        # The plots take such results: the series on two axes, the wake axis with its references.
+        from fddem.figures import pyplot
+
+        plt = pyplot()
+        fig, (drag, length, axis) = plt.subplots(1, 3)
+        sphere_wake.plot_series(drag, length, [m, dict(m, Re=50.0)])
+        sphere_wake.wake_axis(axis, m, 100)
+        self.assertEqual(len(drag.lines), 2 + 3 + 1)  # two correlations, three sources with C_D, fddem
+        self.assertEqual(len(axis.lines), 1 + 1 + 3)  # u, the zero line, L/d at Re 100 of three sources
+        plt.close(fig)
 
 
 class SphereWall(unittest.TestCase):
