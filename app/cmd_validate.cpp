@@ -31,6 +31,10 @@ int validate_command(const ValidateOptions& options)
     if (options.quick) {
         arguments.emplace_back("--quick");
     }
+    if (!options.only.empty()) {
+        arguments.emplace_back("--only");
+        arguments.emplace_back(options.only);
+    }
     return run_child(arguments);
 }
 

@@ -30,6 +30,7 @@ struct RunOptions {
 struct ValidateOptions {
     std::string output_directory = "validation"; ///< report.md, PNGs and the run directories
     bool quick = false;                          ///< the CI-sized set (a few minutes)
+    std::string only;                            ///< run only the checks whose name contains it
 };
 
 struct PlotOptions {

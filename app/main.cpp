@@ -97,6 +97,8 @@ int main(int argc, char** argv)
     validate_cmd->add_flag("--quick", validate.quick, "The few-minute set (run in CI)");
     validate_cmd->add_option("-o,--output", validate.output_directory,
                              "Report directory (default: validation)");
+    validate_cmd->add_option("--only", validate.only,
+                             "Run only the checks whose name contains this text");
 
     PlotOptions plot;
     CLI::App* plot_cmd = app.add_subcommand(

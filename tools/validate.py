@@ -2,11 +2,12 @@
 """fddem's validation report: runs the verification and validation cases, compares each with
 its reference, and writes OUT/report.md with a PNG per case (fddem against the reference).
 
-    python3 tools/validate.py --fddem build/release/app/fddem [--quick] [-o OUT]
-    (or: fddem validate [--quick] [-o OUT])
+    python3 tools/validate.py --fddem build/release/app/fddem [--quick] [--only TEXT] [-o OUT]
+    (or: fddem validate [--quick] [--only TEXT] [-o OUT])
 
 --quick: the cases that fit in a few minutes on two cores (run in CI); without it the full set
-(about 20 minutes). Each check states its reference, where the number comes from and why its
+(about 20 minutes before the 3D cases; the fixed-sphere series adds about 20). --only TEXT: the
+checks whose name contains TEXT (e.g. "fixed sphere"). Each check states its reference, where the number comes from and why its
 tolerance is what it is. Exit status 0 when every check passes, 1 otherwise.
 """
 import argparse
@@ -22,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "python"))
 from fddem import io as fddem_io  # noqa: E402
-from fddem import impulsive_cylinder, plots, references, sphere_wall, ten_cate, uhlmann  # noqa: E402
+from fddem import impulsive_cylinder, plots, references, sphere_wake, sphere_wall, ten_cate, uhlmann  # noqa: E402
 from fddem import wake as cylinder_wake  # noqa: E402
 from fddem.units import Units  # noqa: E402
 
@@ -290,6 +291,72 @@ def sphere_wall_check(name):
     return Check(name, "cases/validation/sphere_wall_approach/case.toml", [], False, evaluate, plot)
 
 
+# The fixed sphere in a uniform stream (cases/validation/sphere_wake, d/h = 8): (Re, ν, end time).
+# Bounds written down before the series was run (the case header has the measurements):
+# - C_D: the two correlations' interval, widened by their ±5 % scatter and by the box effect
+#   measured at Re 100 (the same sphere in a box twice as wide, 12 d instead of 6 d across).
+# - L/d: one grid spacing (h/d = 1/8: where u changes sign is found to about a cell, and the
+#   diffuse surface moves the rear point by a fraction of h) plus 10 % of the reference.
+# - C_L: below Re ≈ 210 the steady wake is axisymmetric (no lateral force); above it, up to
+#   Re ≈ 270, it is steady with one plane of symmetry and a lateral force (Johnson & Patel 1999).
+SPHERE_WAKE_SERIES = ((20, 0.05, 20.0), (50, 0.02, 20.0), (100, 0.01, 30.0), (200, 0.005, 40.0),
+                      (250, 0.004, 100.0))
+# Measured at Re 100, t = 15: C_D 1.1694 in the 6 d box, 1.1580 in the 12 d one (+1.0 %).
+SPHERE_WAKE_BOX_EFFECT = 0.010
+SPHERE_WAKE_GRID = 1.0 / 8.0  # h/d
+
+
+def sphere_wake_name(re):
+    return f"fixed sphere in a uniform stream, Re {re} (d/h = 8)"
+
+
+def sphere_wake_check(re, viscosity, end):
+    """C_D, L/d and C_L of the fixed sphere at one Re against the correlations and published
+    simulations (python/fddem/sphere_wake.py lists where each number was read)."""
+    low, high = sphere_wake.correlation_band(re)
+    mid = 0.5 * (low + high)
+    drag_tolerance = 0.5 * (high - low) + (0.05 + SPHERE_WAKE_BOX_EFFECT) * mid
+    drag_source = (f"Schiller & Naumann {sphere_wake.schiller_naumann(re):.3f} – Clift, Grace & Weber "
+                   f"{sphere_wake.clift_grace_weber(re):.3f}; ±5 % their scatter, "
+                   f"+{100 * SPHERE_WAKE_BOX_EFFECT:.1f} % the box effect measured at Re 100")
+
+    def evaluate(run_dir):
+        m = sphere_wake.measure(run_dir)
+        result = [("C_D", m["C_D"], mid, drag_tolerance, drag_source)]
+        if re < 24:
+            result.append(("L/d", m["L/d"], 0.0, SPHERE_WAKE_GRID,
+                           "no recirculation below Re ≈ 20–24 (Taneda 1956; Johnson & Patel 1999); "
+                           "± one grid spacing"))
+        elif re in sphere_wake.LENGTH_REFERENCE:
+            value, source = sphere_wake.LENGTH_REFERENCE[re]
+            result.append(("L/d", m["L/d"], value, SPHERE_WAKE_GRID + 0.1 * value,
+                           f"{source}; ± h/d + 10 %"))
+        if re < sphere_wake.AXISYMMETRIC_UP_TO:
+            result.append(("C_L", m["C_L"], 0.0, 0.01,
+                           "axisymmetric steady wake below Re ≈ 210 (Johnson & Patel 1999): no lateral force"))
+        else:
+            result.append(("C_L", m["C_L"], 0.055, 0.045,
+                           "steady wake with one plane of symmetry for 210 < Re < 270 (Johnson & "
+                           "Patel 1999): the lateral force must appear; the check is 0.01 ≤ C_L ≤ 0.1"))
+        return result
+
+    def plot(run_dir, axes):
+        here = os.path.dirname(run_dir)
+        runs = [os.path.join(here, slug(sphere_wake_name(r))) for r, _, _ in SPHERE_WAKE_SERIES]
+        results = [sphere_wake.measure(r) for r in runs
+                   if os.path.exists(os.path.join(r, "samples", "wake_axis.csv"))]
+        if re == 250:
+            sphere_wake.plot_series(axes, None, results, label="fddem, d/h = 8")
+        elif re == 200:
+            sphere_wake.plot_series(None, axes, results, label="fddem, d/h = 8")
+        else:
+            sphere_wake.wake_axis(axes, sphere_wake.measure(run_dir), re)
+            axes.set_xlim(-0.2, 4.0)
+
+    return Check(sphere_wake_name(re), "cases/validation/sphere_wake/case.toml",
+                 [f"fluid.viscosity={viscosity}", f"time.end={end}"], False, evaluate, plot)
+
+
 def all_checks():
     checks = [
         cavity_check("cavity Re 100, 64²", 100, 64, True),
@@ -308,6 +375,7 @@ def all_checks():
         re40_check("fixed cylinder, Re 40, tunnel 24 D × 16 D (h = D/32)", "[768,512]", False),
         impulsive_cylinder_check("impulsive cylinder, Re 550, Koumoutsakos & Leonard 1995 (D/40)"),
         sphere_wall_check("sphere approaching a wall, Re 0.01, Brenner 1961 (d/h = 8, lubrication on)"),
+        *[sphere_wake_check(re, nu, end) for re, nu, end in SPHERE_WAKE_SERIES],
         pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.01, False),
         pile_check("100 disks settle", "cases/benchmarks/sedimentation_100_disks/case.toml", 0.05, False),
     ]
@@ -329,6 +397,8 @@ def main():
     parser.add_argument("--fddem", default=os.path.join(ROOT, "build", "release", "app", "fddem"))
     parser.add_argument("--quick", action="store_true")
     parser.add_argument("-o", "--output", default="validation")
+    parser.add_argument("--only", metavar="TEXT",
+                        help="run only the checks whose name contains TEXT (e.g. --only 'fixed sphere')")
     options = parser.parse_args()
     if not os.access(options.fddem, os.X_OK):
         print(f"validate: no fddem program at {options.fddem} (build it, or give --fddem)", file=sys.stderr)
@@ -339,10 +409,13 @@ def main():
     plt = pyplot()  # Agg, and the style of fddem plot
 
     os.makedirs(options.output, exist_ok=True)
-    checks = [c for c in all_checks() if c.quick or not options.quick]
+    checks = [c for c in all_checks() if (c.quick or not options.quick)
+              and (options.only is None or options.only in c.name)]
     lines = ["# fddem validation report", "",
-             f"{'Quick set' if options.quick else 'Full set'}: {len(checks)} cases. "
-             "Command: `fddem validate" + (" --quick" if options.quick else "") + "`.", "",
+             f"{'Quick set' if options.quick else 'Full set'}"
+             + (f", the checks named '{options.only}'" if options.only else "") + f": {len(checks)} cases. "
+             "Command: `fddem validate" + (" --quick" if options.quick else "")
+             + (f' --only "{options.only}"' if options.only else "") + "`.", "",
              "| case | quantity | measured | reference | tolerance | pass | source and reason |",
              "| --- | --- | ---: | ---: | ---: | :---: | --- |"]
     figures = []

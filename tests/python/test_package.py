@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 
 import fddem  # noqa: E402
-from fddem import impulsive_cylinder, io, rebound, slices, sphere_wall, ten_cate  # noqa: E402
+from fddem import impulsive_cylinder, io, rebound, slices, sphere_wake, sphere_wall, ten_cate  # noqa: E402
 from synthetic_run import make_run, velocity_field  # noqa: E402
 
 # A figure with a picture in it: pixel values vary. A blank (one-colour) PNG has variance 0;
@@ -370,6 +370,58 @@ class ImpulsiveCylinder(unittest.TestCase):
         self.assertEqual(impulsive_cylinder.nearest_reference_reynolds(3001.0), 3000)
         with self.assertRaises(ValueError):
             impulsive_cylinder.deviation(tau, drag, ref_tau, ref_drag, window=(3.0, 6.0))
+
+
+class SphereWake(unittest.TestCase):
+    """python/fddem/sphere_wake.py: the drag correlations, and C_D, C_L, L/d of a run."""
+
+    def test_correlations_match_the_shared_table_and_the_cases(self):
+        # ../shared/reference/drag_correlations_sphere.csv (computed there from the same
+        # formula, five significant digits): Schiller-Naumann 2.6095, 1.5381, 1.0917, 0.80561.
+        for re, value in ((20, 2.6095), (50, 1.5381), (100, 1.0917), (200, 0.80561)):
+            self.assertAlmostEqual(sphere_wake.schiller_naumann(re) / value, 1.0, delta=5e-5)
+        # Clift, Grace & Weber at Re 20 (first piece): 2.72 in cases/verification/sphere_re20;
+        # the two pieces meet at Re 20 within 1 %, and the second is 1.087 at Re 100.
+        self.assertAlmostEqual(sphere_wake.clift_grace_weber(20.0), 2.7147, delta=1e-4)
+        self.assertAlmostEqual(sphere_wake.clift_grace_weber(20.0001) / sphere_wake.clift_grace_weber(20.0),
+                               1.0, delta=0.01)
+        self.assertAlmostEqual(sphere_wake.clift_grace_weber(100.0), 1.0870, delta=1e-4)
+        low, high = sphere_wake.correlation_band(200.0)
+        self.assertLess(low, high)
+
+    def test_drag_lift_and_recirculation_length_of_a_run(self):
+        # ρ = 2, U = 0.5, d = 0.4, μ = 0.004: Re = 100, ½ρU²πd²/4 = 0.0314159.
+        with tempfile.TemporaryDirectory() as directory:
+            with open(os.path.join(directory, "case.toml"), "w") as f:
+                f.write("[fluid]\ndensity = 2.0\nviscosity = 0.004\n\n[inflow]\nvelocity = 0.5\n\n"
+                        "[[bodies]]\ndiameter = 0.4\nposition = [1.0, 1.0, 1.0]\n")
+            scale = 0.5 * 2.0 * 0.25 * np.pi * 0.16 / 4.0
+            with open(os.path.join(directory, "particles.csv"), "w") as f:
+                f.write("time,id,fx,fy,fz\n")
+                for n in range(1, 101):  # C_D from 1.2 to 1.1 over the run, C_L = 0.05
+                    cd = 1.1 + 0.1 * (100 - n) / 99
+                    f.write(f"{0.1 * n},0,{cd * scale},{0.03 * scale},{-0.04 * scale}\n")
+            os.makedirs(os.path.join(directory, "samples"))
+            with open(os.path.join(directory, "samples", "wake_axis.csv"), "w") as f:
+                f.write("x,y,z,u,v,w,p\n")
+                for x in np.linspace(1.2, 3.2, 81):  # u = 0 at 0.36 behind the rear point 1.2
+                    f.write(f"{x},1,1,{x - 1.56},0,0,0\n")
+            m = sphere_wake.measure(directory)
+        self.assertAlmostEqual(m["Re"], 100.0, places=9)
+        self.assertAlmostEqual(m["C_D"], 1.1, places=9)
+        self.assertAlmostEqual(m["C_L"], 0.05, places=9)
+        self.assertAlmostEqual(m["L/d"], 0.9, places=9)
+        self.assertAlmostEqual(m["drift"], 0.1 * 10 / 99 / 1.1, delta=0.002)
+        # The plots take such results: the series on two axes, the wake axis with its references.
+        from fddem.figures import pyplot
+
+        plt = pyplot()
+        fig, (drag, length, axis) = plt.subplots(1, 3)
+        sphere_wake.plot_series(drag, length, [m, dict(m, Re=50.0)])
+        sphere_wake.wake_axis(axis, m, 100)
+        self.assertEqual(len(drag.lines), 2 + 3 + 1)  # two correlations, three sources with C_D, fddem
+        self.assertEqual(len(axis.lines), 1 + 1 + 3)  # u, the zero line, L/d at Re 100 of three sources
+        plt.close(fig)
 
 
 class SphereWall(unittest.TestCase):
