@@ -358,7 +358,7 @@ def all_checks():
         impulsive_cylinder_check("impulsive cylinder, Re 550, Koumoutsakos & Leonard 1995 (D/40)"),
         shedding_cylinder_check("Re 100 shedding, Schäfer & Turek 2D-2 (h = D/20)"),
         heavy_disk_check("heavy disk falling in a box, Re_max, Glowinski et al. 2001 (d/h = 16)",
-                         ["domain.cells=[128,384]", "time.end=0.45"]),
+                         ["domain.cells=[128,384]", "time.end=0.35"]),
         sphere_wall_check("sphere approaching a wall, Re 0.01, Brenner 1961 (d/h = 8, lubrication on)"),
         pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.01, False),
         pile_check("100 disks settle", "cases/benchmarks/sedimentation_100_disks/case.toml", 0.05, False),
