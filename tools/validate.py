@@ -23,7 +23,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "python"))
 from fddem import io as fddem_io  # noqa: E402
-from fddem import impulsive_cylinder, plots, references, sphere_wake, sphere_wall, ten_cate, uhlmann  # noqa: E402
+from fddem import heavy_disk, impulsive_cylinder, plots, references, shedding  # noqa: E402
+from fddem import sphere_wake, sphere_wall, ten_cate, uhlmann  # noqa: E402
 from fddem import wake as cylinder_wake  # noqa: E402
 from fddem.units import Units  # noqa: E402
 
@@ -35,13 +36,14 @@ SI, CGS = Units("SI", 2), Units("CGS", 2)  # axis labels of the 2D cases checked
 class Check:
     """One case: how to run it, what to measure, against what."""
 
-    def __init__(self, name, case, overrides, quick, evaluate, plot):
+    def __init__(self, name, case, overrides, quick, evaluate, plot, panels=1):
         self.name = name
         self.case = case
         self.overrides = overrides
         self.quick = quick
         self.evaluate = evaluate  # run_dir -> list of (quantity, measured, reference, tolerance, source)
-        self.plot = plot  # (run_dir, axes) -> None
+        self.plot = plot  # (run_dir, axes) -> None; axes is a list of `panels` axes if panels > 1
+        self.panels = panels  # stacked panels sharing the x axis
 
 
 def centreline_deviation(run_dir, reference_dir):
@@ -357,6 +359,53 @@ def sphere_wake_check(re, viscosity, end):
                  [f"fluid.viscosity={viscosity}", f"time.end={end}"], False, evaluate, plot)
 
 
+def shedding_cylinder_check(name):
+    """Schäfer & Turek (1996) 2D-2, Re = 100: C_D,max, C_L,max and St of the periodic shedding
+    over the last five lift periods of cases/validation/schafer_turek_2d2 (D/20). The bounds are
+    issue 13's targets: C_D,max within 3 % and C_L,max within 10 % of the benchmark's band, St
+    inside it. The case header gives what fddem measured and why it misses the lift."""
+    source = ("Schäfer & Turek (1996), 2D-2 lower/upper bounds (case header); bound: issue 13's "
+              "target at D/20, {}")
+
+    def band(key, fraction):
+        low, high = shedding.BAND[key]
+        low, high = low * (1.0 - fraction), high * (1.0 + fraction)
+        return 0.5 * (low + high), 0.5 * (high - low)
+
+    def evaluate(run_dir):
+        r = shedding.shedding_numbers(run_dir, 1.0, 0.1, periods=5)
+        drag, drag_tolerance = band("C_D,max", 0.03)
+        lift, lift_tolerance = band("C_L,max", 0.10)
+        strouhal, strouhal_tolerance = band("St", 0.0)
+        return [("C_D,max", r["C_D,max"], drag, drag_tolerance, source.format("3.22–3.24 ± 3 %")),
+                ("C_L,max", r["C_L,max"], lift, lift_tolerance, source.format("0.99–1.01 ± 10 %")),
+                ("St", r["St"], strouhal, strouhal_tolerance, source.format("inside 0.295–0.305"))]
+
+    def plot(run_dir, axes):
+        drag_axes, lift_axes = axes
+        shedding.plot(drag_axes, lift_axes, run_dir, 1.0, 0.1, label="fddem, D/20")
+
+    return Check(name, "cases/validation/schafer_turek_2d2/case.toml", [], False, evaluate, plot, panels=2)
+
+
+def heavy_disk_check(name, overrides):
+    """The heavy disk of Glowinski et al. (2001) in the closed 2 × 6 box: Re_max of the fall
+    (before the centre is within 0.4 cm of the floor) against the published spread."""
+    source = ("Glowinski et al. (2001) 438.6/466, Uhlmann (2005) 495, Wang et al. (2008) "
+              "484.75–503.38, as quoted (case header); bound: their spread. fddem's terminal "
+              "speed is 68–70 % of it, not resolved (docs/method.md §4)")
+
+    def evaluate(run_dir):
+        r = heavy_disk.fall_maximum(run_dir)
+        low, high = heavy_disk.BAND
+        return [("Re_max of the fall", r["Re_max"], 0.5 * (low + high), 0.5 * (high - low), source)]
+
+    def plot(run_dir, axes):
+        heavy_disk.plot(axes, run_dir)
+
+    return Check(name, "cases/validation/glowinski_disk_b/case.toml", overrides, False, evaluate, plot)
+
+
 def all_checks():
     checks = [
         cavity_check("cavity Re 100, 64²", 100, 64, True),
@@ -374,6 +423,9 @@ def all_checks():
         schafer_turek_check("cylinder in a channel, Re 20, Schäfer & Turek 2D-1 (h = D/40)", "[880,164]", False),
         re40_check("fixed cylinder, Re 40, tunnel 24 D × 16 D (h = D/32)", "[768,512]", False),
         impulsive_cylinder_check("impulsive cylinder, Re 550, Koumoutsakos & Leonard 1995 (D/40)"),
+        shedding_cylinder_check("Re 100 shedding, Schäfer & Turek 2D-2 (h = D/20)"),
+        heavy_disk_check("heavy disk falling in a box, Re_max, Glowinski et al. 2001 (d/h = 16)",
+                         ["domain.cells=[128,384]", "time.end=0.35"]),
         sphere_wall_check("sphere approaching a wall, Re 0.01, Brenner 1961 (d/h = 8, lubrication on)"),
         *[sphere_wake_check(re, nu, end) for re, nu, end in SPHERE_WAKE_SERIES],
         pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.01, False),
@@ -443,11 +495,15 @@ def main():
             lines.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
             print(f"{'pass' if passed else 'FAIL'} {check.name}: {quantity} = {measured:.4g} "
                   f"(reference {reference:.4g} ± {tolerance:.3g}) [{seconds:.0f} s]")
-        fig, axes = plt.subplots(figsize=(5, 4))
-        check.plot(run_dir, axes)
-        axes.set_title(check.name, fontsize=9)
-        axes.grid(alpha=0.3)
-        axes.legend(fontsize=7)
+        fig, panels = plt.subplots(check.panels, 1, figsize=(5, 4 + 2 * (check.panels - 1)), sharex=True,
+                                   squeeze=False)
+        panels = list(panels[:, 0])
+        check.plot(run_dir, panels[0] if check.panels == 1 else panels)
+        panels[0].set_title(check.name, fontsize=9)
+        for axes in panels:
+            axes.grid(alpha=0.3)
+            if check.panels == 1:  # a check that draws several panels places its own legends
+                axes.legend(fontsize=7)
         fig.tight_layout()
         png = slug(check.name) + ".png"
         fig.savefig(os.path.join(options.output, png), dpi=100)

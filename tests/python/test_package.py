@@ -22,7 +22,8 @@ sys.path.insert(0, os.path.join(ROOT, "python"))
 sys.path.insert(0, HERE)
 
 import fddem  # noqa: E402
-from fddem import impulsive_cylinder, io, rebound, slices, sphere_wake, sphere_wall, ten_cate  # noqa: E402
+from fddem import heavy_disk, impulsive_cylinder, io, rebound, shedding, slices  # noqa: E402
+from fddem import sphere_wake, sphere_wall, ten_cate  # noqa: E402
 from synthetic_run import make_run, velocity_field  # noqa: E402
 
 # A figure with a picture in it: pixel values vary. A blank (one-colour) PNG has variance 0;
@@ -423,6 +424,68 @@ class SphereWake(unittest.TestCase):
         self.assertEqual(len(axis.lines), 1 + 1 + 3)  # u, the zero line, L/d at Re 100 of three sources
         plt.close(fig)
 
+
+
+def write_particles(directory, columns):
+    """particles.csv of one body (id 0) from a dict of column arrays; the rest zero."""
+    names = ["time", "id", "x", "y", "u", "v", "omega", "theta", "fx", "fy", "torque",
+             "contact_fx", "contact_fy", "contact_torque"]
+    n = len(columns["time"])
+    with open(os.path.join(directory, "particles.csv"), "w") as f:
+        f.write(",".join(names) + "\n")
+        for i in range(n):
+            f.write(",".join(repr(float(columns[c][i])) if c in columns else "0" for c in names) + "\n")
+
+
+class Shedding(unittest.TestCase):
+    """python/fddem/shedding.py on a force history of known amplitude and period: C_D,max,
+    C_L,max and St over the last lift periods, with a start-up that must not be read."""
+
+    def test_maxima_and_strouhal_of_a_periodic_history_after_its_start_up(self):
+        # Ū = 2, D = 0.5, ρ = 3: C = 2F/(ρŪ²D) = F/3. Lift amplitude 0.8, period 0.7 (St =
+        # D/(Ū T) = 0.5/1.4); drag 3.0 + 0.05 sin(2ωt) (twice the lift's frequency, as shed
+        # vortices give); a start-up to t = 2 with a larger drag (5) that the window excludes.
+        t = np.arange(0.0, 10.0, 0.0005)
+        omega = 2.0 * np.pi / 0.7
+        lift = 0.8 * np.sin(omega * t) * np.minimum(1.0, t / 2.0)
+        drag = 3.0 + 0.05 * np.sin(2.0 * omega * t) + np.where(t < 2.0, 2.0, 0.0)
+        with tempfile.TemporaryDirectory() as directory:
+            write_particles(directory, {"time": t, "fx": 3.0 * drag, "fy": 3.0 * lift})
+            r = shedding.shedding_numbers(directory, 2.0, 0.5, density=3.0)
+        self.assertAlmostEqual(r["St"], 0.5 / (2.0 * 0.7), delta=1e-6)
+        self.assertAlmostEqual(r["C_L,max"], 0.8, delta=1e-4)
+        self.assertAlmostEqual(r["C_L,min"], -0.8, delta=1e-4)
+        self.assertAlmostEqual(r["C_D,max"], 3.05, delta=1e-4)
+        self.assertAlmostEqual(r["window"][1] - r["window"][0], 5 * 0.7, delta=1e-6)
+        self.assertGreater(r["window"][0], 2.0)
+
+    def test_a_lift_without_shedding_is_refused(self):
+        t = np.linspace(0.0, 1.0, 101)
+        with tempfile.TemporaryDirectory() as directory:
+            write_particles(directory, {"time": t, "fx": np.ones_like(t), "fy": 0.01 + 0.0 * t})
+            with self.assertRaises(ValueError):
+                shedding.shedding_numbers(directory, 1.0, 0.1)
+
+
+class HeavyDisk(unittest.TestCase):
+    """python/fddem/heavy_disk.py: Re = |U| d/ν from the case's ν and d, and its maximum read
+    before the centre comes within 0.4 of the floor (a later contact spike is not the fall)."""
+
+    def test_the_maximum_of_the_fall_ignores_the_spike_at_the_floor(self):
+        t = np.linspace(0.0, 0.5, 501)
+        speed = np.where(t < 0.3, 40.0 * t, 12.0)  # cm/s; Re = 0.25 |U|/0.02 = 12.5 |U|
+        speed[t > 0.47] = 60.0  # the contact spike, below y = 0.4 (y = 0.4 at t = 0.45)
+        y = 4.0 - np.cumsum(speed) * (t[1] - t[0])
+        with tempfile.TemporaryDirectory() as directory:
+            with open(os.path.join(directory, "case.toml"), "w") as f:
+                f.write("[fluid]\ndensity = 2.0\nviscosity = 0.04\n\n[[bodies]]\ndiameter = 0.25\n")
+            write_particles(directory, {"time": t, "y": y, "u": 0.6 * speed, "v": -0.8 * speed})
+            r = heavy_disk.fall_maximum(directory)
+            _, _, re = heavy_disk.reynolds_history(directory)
+        self.assertAlmostEqual(re.max(), 60.0 * 12.5, delta=1e-9)
+        self.assertAlmostEqual(r["Re_max"], 12.0 * 12.5, delta=1e-9)
+        self.assertTrue(r["reached_floor"])
+        self.assertGreaterEqual(r["y_end"], heavy_disk.FLOOR_CLEARANCE)
 
 class SphereWall(unittest.TestCase):
     """tools/compare_sphere_wall.py: Brenner's (1961) series against its published table, and
