@@ -25,7 +25,7 @@ public:
     MpiSession(int* argc, char*** argv)
     {
         if (fddem::is_started_by_mpi_launcher()) {
-            MPI_Init(argc, argv);
+            fddem::start_mpi(argc, argv);
         }
     }
     MpiSession(const MpiSession&) = delete;

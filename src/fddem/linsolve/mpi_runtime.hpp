@@ -11,6 +11,9 @@ namespace fddem {
 /// environment before MPI_Init.
 [[nodiscard]] bool is_started_by_mpi_launcher();
 
+/// Starts MPI (MPI_Init with the program's arguments, which may be null). Call once, from the
+/// main thread, before any other MPI call.
+void start_mpi(int* argc, char*** argv);
 /// Starts MPI if it is not running and has not ended. Call from the main thread.
 void ensure_mpi_started();
 
