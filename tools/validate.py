@@ -456,13 +456,19 @@ def main():
         print(f"validate: no fddem program at {options.fddem} (build it, or give --fddem)", file=sys.stderr)
         return 2
 
+    checks = [c for c in all_checks() if (c.quick or not options.quick)
+              and (options.only is None or options.only in c.name)]
+    if not checks:
+        # Nothing to run is bad input, not "0 failing" (and nothing is written).
+        print(f"validate: --only: no check of the {'quick' if options.quick else 'full'} set has "
+              f"'{options.only}' in its name", file=sys.stderr)
+        return 2
+
     from fddem.figures import pyplot
 
     plt = pyplot()  # Agg, and the style of fddem plot
 
     os.makedirs(options.output, exist_ok=True)
-    checks = [c for c in all_checks() if (c.quick or not options.quick)
-              and (options.only is None or options.only in c.name)]
     lines = ["# fddem validation report", "",
              f"{'Quick set' if options.quick else 'Full set'}"
              + (f", the checks named '{options.only}'" if options.only else "") + f": {len(checks)} cases. "

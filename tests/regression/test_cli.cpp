@@ -45,6 +45,17 @@ protected:
     fs::path case_file_;
 };
 
+TEST_F(Cli, ValidateOnlyThatMatchesNoCheckIsExitTwoAndWritesNothing)
+{
+    // Before: "0 failing" for a filter that ran nothing.
+    const fs::path out = root_ / "report";
+    const Result r = run("validate --only 'no such check' -o " + out.string());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_EQ(r.output,
+              "validate: --only: no check of the full set has 'no such check' in its name\n");
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(Cli, SmallRunWritesEveryDocumentedOutput)
 {
     const fs::path out = root_ / "run";

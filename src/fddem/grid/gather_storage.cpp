@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/grid/gather_storage.hpp"
 
+#include "fddem/grid/box_values.hpp"
 #include "fddem/grid/loops.hpp"
 
 #include <vector>
@@ -8,24 +9,6 @@
 namespace fddem {
 
 namespace {
-
-/// The values of `array` over `box`, x fastest.
-template <int Dim>
-std::vector<double> values_in(const GridArray<Dim>& array, const Box<Dim>& box)
-{
-    std::vector<double> values;
-    values.reserve(box.size());
-    for_each_cell_in_vtk_order(box, [&](const Index<Dim>& i) { values.push_back(array(i)); });
-    return values;
-}
-
-/// Writes `values` (x fastest) into `array` over `box`.
-template <int Dim>
-void put_values(const std::vector<double>& values, const Box<Dim>& box, GridArray<Dim>& array)
-{
-    std::size_t k = 0;
-    for_each_cell_in_vtk_order(box, [&](const Index<Dim>& i) { array(i) = values[k++]; });
-}
 
 // Message tags of a gather: the box first, then its values.
 constexpr int tag_box = 41;
@@ -62,10 +45,10 @@ void gather_to_root(const MacGrid<Dim>& grid, const GridArray<Dim>& part, GridAr
             box[Dim + d] = mine.hi[d];
         }
         ranks.exchange(box, 0, {}, Communicator::no_rank, tag_box);
-        ranks.exchange(values_in(part, mine), 0, {}, Communicator::no_rank, tag_values);
+        ranks.exchange(pack(part, mine), 0, {}, Communicator::no_rank, tag_values);
         return;
     }
-    put_values(values_in(part, mine), mine, whole);
+    unpack(whole, mine, pack(part, mine));
     for (int source = 1; source < ranks.size(); ++source) {
         std::vector<double> box(2 * Dim);
         ranks.exchange({}, Communicator::no_rank, box, source, tag_box);
@@ -76,7 +59,7 @@ void gather_to_root(const MacGrid<Dim>& grid, const GridArray<Dim>& part, GridAr
         }
         std::vector<double> values(theirs.size());
         ranks.exchange({}, Communicator::no_rank, values, source, tag_values);
-        put_values(values, theirs, whole);
+        unpack(whole, theirs, values);
     }
 }
 

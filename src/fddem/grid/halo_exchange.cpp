@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/grid/halo_exchange.hpp"
 
+#include "fddem/grid/box_values.hpp"
 #include "fddem/grid/loops.hpp"
 
 #include <vector>
@@ -54,22 +55,6 @@ Box<Dim> layers(const MacGrid<Dim>& grid, int axis, int first, int count)
     box.lo[static_cast<std::size_t>(axis)] = first;
     box.hi[static_cast<std::size_t>(axis)] = first + count;
     return box;
-}
-
-template <int Dim>
-std::vector<double> pack(const GridArray<Dim>& a, const Box<Dim>& box)
-{
-    std::vector<double> buffer;
-    buffer.reserve(box.size());
-    for_each_cell_in_vtk_order(box, [&](const Index<Dim>& i) { buffer.push_back(a(i)); });
-    return buffer;
-}
-
-template <int Dim>
-void unpack(GridArray<Dim>& a, const Box<Dim>& box, const std::vector<double>& buffer)
-{
-    std::size_t k = 0;
-    for_each_cell_in_vtk_order(box, [&](const Index<Dim>& i) { a(i) = buffer[k++]; });
 }
 
 template <int Dim>
