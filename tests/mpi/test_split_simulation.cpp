@@ -35,11 +35,14 @@ std::string case_path(const char* name)
 }
 
 template <int Dim>
-void expect_split_case_matches(const char* file, const char* name)
+void expect_split_case_matches(const char* file, const char* name,
+                               const std::vector<std::string>& overrides = {})
 {
     const Communicator world = Communicator::world();
     // hypre on one process as well (auto would take the FFT solver there), solved tightly.
-    const CaseConfig config = read_case(case_path(file), hypre_settings);
+    std::vector<std::string> settings = hypre_settings;
+    settings.insert(settings.end(), overrides.begin(), overrides.end());
+    const CaseConfig config = read_case(case_path(file), settings);
     Simulation<Dim> whole(config);
     Simulation<Dim> split(config, world);
     int steps = 0;
@@ -47,6 +50,9 @@ void expect_split_case_matches(const char* file, const char* name)
     double largest_u = 0.0;
     double worst_p = 0.0;
     double largest_p = 0.0;
+    double worst_body = 0.0; // of the bodies' motion and forces, relative to their largest
+    int contact_steps = 0;   // steps with a contact, one process
+    int contact_steps_split = 0;
     bool is_finished = false;
     while (!is_finished) {
         const StepReport expected = whole.advance();
@@ -62,20 +68,30 @@ void expect_split_case_matches(const char* file, const char* name)
             worst_u = std::max(worst_u, worst / std::max(largest, 1e-300));
             largest_u = std::max(largest_u, largest);
         }
+        ASSERT_EQ(report.contacts, expected.contacts) << "step " << steps;
+        contact_steps += expected.contacts > 0 ? 1 : 0;
+        contact_steps_split += report.contacts > 0 ? 1 : 0;
+        worst_body =
+            std::max(worst_body, test::body_difference<Dim>(split.bodies(), whole.bodies()));
         const auto [worst, largest] = test::compare_owned<Dim>(world, split.grid().owned_cells(),
                                                                split.fluid().p, whole.fluid().p);
         worst_p = std::max(worst_p, worst / std::max(largest, 1e-300));
         largest_p = std::max(largest_p, largest);
     }
     EXPECT_GE(steps, 5);
+    EXPECT_LE(worst_body, 1e-10);
+    EXPECT_EQ(contact_steps_split, contact_steps);
+    if (!whole.bodies().empty()) {
+        EXPECT_GT(contact_steps, 0); // the case's collisions happened
+    }
     EXPECT_GT(largest_u, 0.5); // the flow has started
     EXPECT_GT(largest_p, 1e-3);
     EXPECT_LE(worst_u, 1e-10);
     EXPECT_LE(worst_p, 1e-10);
     if (world.rank() == 0) {
         std::printf("[ info ] %s, %d steps on %d ranks: max |Δu|/max|u| = %.2e, "
-                    "max |Δp|/max|p| = %.2e\n",
-                    name, steps, world.size(), worst_u, worst_p);
+                    "max |Δp|/max|p| = %.2e, bodies %.2e, %d steps in contact\n",
+                    name, steps, world.size(), worst_u, worst_p, worst_body, contact_steps);
     }
 }
 
@@ -89,30 +105,45 @@ TEST(SplitSimulation, ChannelStepsMatchOneProcess)
     expect_split_case_matches<3>("channel.toml", "3D channel");
 }
 
-TEST(SplitSimulation, BodiesOnSeveralRanksAreRefusedByName)
+TEST(SplitSimulation, DisksAcrossRankFacesCollidingMatchOneProcess)
+{
+    expect_split_case_matches<2>("disks.toml", "2D disks");
+}
+
+TEST(SplitSimulation, TheLayoutOfParallelRanksIsTakenAndChecked)
 {
     const Communicator world = Communicator::world();
-    const std::string text = test::file_contents(case_path("cavity.toml")) + R"(
-[[bodies]]
-shape = "disk"
-diameter = 0.2
-density = 2.0
-position = [0.5, 0.45]
-)";
-    const CaseConfig config = read_case_string(text, "disk.toml");
-    if (world.size() == 1) {
-        Simulation<2> sim(config, world); // one process: bodies as always
-        EXPECT_EQ(sim.bodies().size(), 1U);
+    const int n = world.size();
+    // Slabs across x, which the automatic layout (2 × 2 on 4 ranks, y on 2) does not choose.
+    const std::string across_x = "parallel.ranks=[" + std::to_string(n) + ", 1]";
+    {
+        const CaseConfig config = read_case(case_path("cavity.toml"), {across_x});
+        const Simulation<2> sim(config, world);
+        EXPECT_EQ(sim.grid().partition().ranks, (Index<2>{n, 1})); // one process: [1, 1]
+    }
+    if (n > 1) {
+        expect_split_case_matches<2>("cavity.toml", "2D cavity in x-slabs", {across_x});
+    }
+    const std::string too_many = "parallel.ranks=[" + std::to_string(n + 1) + ", 1]";
+    const CaseConfig config = read_case(case_path("cavity.toml"), {too_many});
+    if (n == 1) {
+        EXPECT_NO_THROW(Simulation<2>(config, world)); // ignored on one process
         return;
     }
     try {
-        Simulation<2> sim(config, world);
-        ADD_FAILURE() << "a split grid with a body was accepted";
+        const Simulation<2> sim(config, world);
+        ADD_FAILURE() << "a layout of " << n + 1 << " blocks was taken on " << n << " ranks";
     } catch (const InputError& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find("not supported yet"), std::string::npos) << what;
-        EXPECT_EQ(e.key(), "bodies");
+        EXPECT_EQ(e.key(), "parallel.ranks");
+        EXPECT_NE(std::string(e.what()).find(std::to_string(n) + " ranks"), std::string::npos)
+            << e.what();
+        EXPECT_NE(e.file().find("cavity.toml"), std::string::npos) << e.file();
     }
+}
+
+TEST(SplitSimulation, SpheresAcrossRankFacesCollidingMatchOneProcess)
+{
+    expect_split_case_matches<3>("spheres.toml", "3D spheres");
 }
 
 } // namespace

@@ -2,11 +2,13 @@
 #pragma once
 // The issue-15 tests' comparison of an array on a split grid with the one-process array.
 
+#include "fddem/bodies/particles.hpp"
 #include "fddem/grid/communicator.hpp"
 #include "fddem/grid/fields.hpp"
 #include "fddem/grid/loops.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -25,6 +27,43 @@ std::pair<double, double> compare_owned(const Communicator& world, const Box<Dim
         largest = std::max(largest, std::abs(whole(i)));
     });
     return {world.max(worst), world.max(largest)};
+}
+
+/// The largest difference of the bodies' centres, velocities (U, and ω R at the rim) and
+/// hydrodynamic loads (F, and T / R) between a split run's copies and the one-process run's,
+/// each relative to the largest value of its kind among the one-process bodies (a rim speed
+/// to the largest speed, a torque to the largest force: a disk that falls straight has ω ≈ 0,
+/// which is no scale), over all ranks (each holds every body).
+template <int Dim>
+double body_difference(const Particles<Dim>& split, const Particles<Dim>& whole)
+{
+    struct Kind {
+        double worst = 0.0;
+        double largest = 0.0;
+        void add(double difference, double reference)
+        {
+            worst = std::max(worst, std::abs(difference));
+            largest = std::max(largest, std::abs(reference));
+        }
+    };
+    std::array<Kind, 3> kinds; // centre, speed, load
+    for (std::size_t k = 0; k < whole.size(); ++k) {
+        const Particle<Dim>& a = split[k];
+        const Particle<Dim>& b = whole[k];
+        const double r = b.radius();
+        kinds[0].add((a.centre - b.centre).norm(), b.centre.norm());
+        kinds[1].add((a.velocity - b.velocity).norm(), b.velocity.norm());
+        kinds[1].add(magnitude<Dim>(a.omega - b.omega) * r, magnitude<Dim>(b.omega) * r);
+        kinds[2].add((a.force - b.force).norm(), b.force.norm());
+        kinds[2].add(magnitude<Dim>(a.torque - b.torque) / r, magnitude<Dim>(b.torque) / r);
+    }
+    double worst = 0.0;
+    for (const Kind& kind : kinds) {
+        if (kind.largest > 0.0) {
+            worst = std::max(worst, kind.worst / kind.largest);
+        }
+    }
+    return whole.empty() ? 0.0 : split.empty() ? 1.0 : worst;
 }
 
 } // namespace fddem::test

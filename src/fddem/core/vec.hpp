@@ -6,11 +6,24 @@
 #include <Eigen/Geometry> // cross products
 
 #include <cmath>
+#include <span>
+#include <vector>
 
 namespace fddem {
 
 template <int Dim>
 using Vec = Eigen::Matrix<double, Dim, 1>;
+
+/// The values of a list of small vectors (λ or I(u) on the markers) as one span of doubles, for
+/// the mixing of the outer iterate and the sums over MPI ranks: a Vec<Dim> is Dim contiguous
+/// doubles.
+template <int Dim>
+[[nodiscard]] std::span<double> flat_values(std::vector<Vec<Dim>>& values)
+{
+    static_assert(sizeof(Vec<Dim>) == Dim * sizeof(double));
+    return values.empty() ? std::span<double>()
+                          : std::span<double>(values.front().data(), Dim * values.size());
+}
 
 /// Angular velocity and torque: a scalar about z in 2D, a vector in 3D.
 template <int Dim>

@@ -14,8 +14,9 @@ void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<D
     for (int a = 0; a < Dim; ++a) {
         body_force[a].fill(uniform_force[a]);
     }
-    // What markers by a periodic side spread into the ghosts beyond it belongs to the faces
-    // there on the other side: collected in zeroed ghosts, then added to their owners.
+    // What markers by a periodic side (or by a rank face of a split grid) spread into the ghosts
+    // beyond it belongs to the faces there on the other side: collected in zeroed ghosts, then
+    // added to their owners.
     const HaloExchange<Dim> halo(grid);
     halo.zero_ghosts(body_force);
     std::visit(
@@ -23,6 +24,9 @@ void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<D
             for (const Particle<Dim>& body : bodies) {
                 const MarkerCoupling<Dim>& c = body.coupling;
                 for (std::size_t l = 0; l < c.markers.size(); ++l) {
+                    if (!grid.owns_point(c.positions[l])) {
+                        continue; // another rank's (a split grid): it spreads this one
+                    }
                     spread_vector<Dim, decltype(k)>(grid, body_force, c.positions[l],
                                                     fluid_density * c.lambda[l],
                                                     c.markers.volumes[l]);

@@ -24,12 +24,16 @@ void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time
     MarkerCoupling<Dim>& c = body.coupling;
     c.fluid_second_moment = inertia_in_world<Dim>(body.orientation, c.body_second_moment);
     const PeriodicDomain<Dim> domain = grid.domain();
+    // Checked against the one-process storage, so that every rank of a split grid gives the
+    // same verdict (the bodies are the same on every rank): a marker that fits there fits in
+    // the storage of the rank that owns it, the only one that interpolates and spreads it.
+    const Box<Dim> storage = grid.whole_storage_box();
     for (std::size_t l = 0; l < c.markers.size(); ++l) {
         c.offsets[l] = to_world<Dim>(body.orientation, c.markers.offsets[l]);
         // Each marker on its own image in the box: a body across a periodic side has markers
         // on both sides, and every marker's kernel support stays within the ghost layers.
         c.positions[l] = domain.wrap(body.centre + c.offsets[l]);
-        if (!fits_in_storage<Dim, Kernel>(grid, c.positions[l])) {
+        if (!fits_in_box<Dim, Kernel>(grid, storage, c.positions[l])) {
             throw NumericalError(step, time, who,
                                  fmt::format("a marker of the body left the box (its kernel "
                                              "support reaches past the ghost layers): centre "

@@ -42,14 +42,32 @@ RigidVelocity<Dim> new_motion(const Particle<Dim>& body, const RigidUpdateSettin
                                c.lambda_star); // eqs. (13)–(14)
 }
 
+/// I(u) at every marker of the body, the same on every rank of a split grid (issue 15): each
+/// marker is interpolated by the rank that owns the cell it sits in (its kernel support is then
+/// within that rank's storage, whose halo is filled), the others give zero, and the sum over the
+/// ranks is exactly the owner's value (x + 0 = x), so U and ω of eqs. (13)–(14) come out the same
+/// on every rank and as on one process. One message per body and outer iteration: it grows with
+/// the bodies' count, not only with those a rank holds (docs/parallel.md).
+template <int Dim, class Kernel>
+void interpolate_at_markers(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
+                            MarkerCoupling<Dim>& c)
+{
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        c.fluid[l] = grid.owns_point(c.positions[l])
+                         ? interpolate_velocity<Dim, Kernel>(grid, u, c.positions[l])
+                         : Vec<Dim>::Zero();
+    }
+    if (grid.communicator().size() > 1) {
+        grid.communicator().sum(flat_values<Dim>(c.fluid));
+    }
+}
+
 template <int Dim, class Kernel>
 double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
                   FaceField<Dim>& u)
 {
     MarkerCoupling<Dim>& c = body.coupling;
-    for (std::size_t l = 0; l < c.markers.size(); ++l) {
-        c.fluid[l] = interpolate_velocity<Dim, Kernel>(grid, u, c.positions[l]); // I(u)
-    }
+    interpolate_at_markers<Dim, Kernel>(grid, u, c); // I(u)
     const RigidVelocity<Dim> motion = new_motion(body, s);
     const double defect = update_marker_force<Dim>(motion, c.offsets, c.fluid, c.lambda_star, s.dt,
                                                    c.lambda); // eq. (15)
@@ -59,8 +77,13 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
     // to the faces on the other side (zeroed first, then accumulated onto their owners) and are
     // filled again, so that the next body's I(u) reads this body's correction there as well.
     const HaloExchange<Dim> halo(grid);
+    // On a split grid each marker is spread by its owner only, into its block and halo; the
+    // accumulation then adds the halo's share to the neighbours' faces.
     halo.zero_ghosts(u);
     for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        if (!grid.owns_point(c.positions[l])) {
+            continue;
+        }
         spread_vector<Dim, Kernel>(grid, u, c.positions[l], s.dt * (c.lambda[l] - c.lambda_star[l]),
                                    c.markers.volumes[l]);
     }

@@ -61,9 +61,8 @@ void for_each_stencil_point(const MacGrid<Dim>& grid, int axis, const Vec<Dim>& 
 } // namespace
 
 template <int Dim, DeltaKernel Kernel>
-bool fits_in_storage(const MacGrid<Dim>& grid, const Vec<Dim>& x)
+bool fits_in_box(const MacGrid<Dim>& grid, const Box<Dim>& storage, const Vec<Dim>& x)
 {
-    const Box<Dim> storage = grid.storage_box();
     for (int axis = 0; axis < Dim; ++axis) {
         for (int d = 0; d < Dim; ++d) {
             const auto st = stencil_along<Dim, Kernel>(grid, d, axis, x[d]);
@@ -95,7 +94,7 @@ void spread_component(const MacGrid<Dim>& grid, GridArray<Dim>& a, int axis, con
 }
 
 #define FDDEM_INSTANTIATE_TRANSFER(DIM, KERNEL)                                                    \
-    template bool fits_in_storage<DIM, KERNEL>(const MacGrid<DIM>&, const Vec<DIM>&);              \
+    template bool fits_in_box<DIM, KERNEL>(const MacGrid<DIM>&, const Box<DIM>&, const Vec<DIM>&); \
     template double interpolate_component<DIM, KERNEL>(const MacGrid<DIM>&, const GridArray<DIM>&, \
                                                        int, const Vec<DIM>&);                      \
     template void spread_component<DIM, KERNEL>(const MacGrid<DIM>&, GridArray<DIM>&, int,         \

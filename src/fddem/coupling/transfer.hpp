@@ -13,9 +13,18 @@
 
 namespace fddem {
 
+/// True if the support of Kernel around x fits in `box` (of the grid's indices) for every
+/// component: the grid's storage_box() for this process's arrays, or whole_storage_box() for a
+/// check that gives the same answer on every rank.
+template <int Dim, DeltaKernel Kernel>
+[[nodiscard]] bool fits_in_box(const MacGrid<Dim>& grid, const Box<Dim>& box, const Vec<Dim>& x);
+
 /// True if the support of Kernel around x fits in the grid's storage for every component.
 template <int Dim, DeltaKernel Kernel>
-[[nodiscard]] bool fits_in_storage(const MacGrid<Dim>& grid, const Vec<Dim>& x);
+[[nodiscard]] bool fits_in_storage(const MacGrid<Dim>& grid, const Vec<Dim>& x)
+{
+    return fits_in_box<Dim, Kernel>(grid, grid.storage_box(), x);
+}
 
 /// I for one component: the field `a` (component `axis`) at point x.
 template <int Dim, DeltaKernel Kernel>

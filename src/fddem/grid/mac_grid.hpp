@@ -150,6 +150,18 @@ public:
         return b.grown(n_ghost);
     }
 
+    /// The storage box of the same grid on one process, [−n_ghost, n + 1 + n_ghost): the
+    /// same on every rank. A point whose kernel support fits in it fits in the storage of the
+    /// rank that owns it (owns_point), whose block's storage reaches n_ghost beyond the block.
+    [[nodiscard]] Box<Dim> whole_storage_box() const noexcept
+    {
+        Box<Dim> b = cell_box();
+        for (int d = 0; d < Dim; ++d) {
+            b.hi[ax(d)] += 1;
+        }
+        return b.grown(n_ghost);
+    }
+
     [[nodiscard]] Vec<Dim> cell_centre(const Index<Dim>& cell) const noexcept;
     /// Centre of the low face of `cell` along `axis`.
     [[nodiscard]] Vec<Dim> face_centre(int axis, const Index<Dim>& cell) const noexcept;

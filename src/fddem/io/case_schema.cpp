@@ -674,6 +674,14 @@ std::vector<KeySpec> case_schema()
                            "at its start) is larger stops before any work (exit status 2). "
                            "None: the machine's memory (its cgroup limit, if lower).")),
               &CaseConfig::run, &RunConfig::max_memory));
+    s.push_back(
+        bound(ranged(key("parallel", "ranks", T::integer_vector, none, "none",
+                         "MPI ranks along each axis on a run of several processes (mpirun -n N): "
+                         "their product must be N, and every block at least 3 cells thick. Ignored "
+                         "on one process. None: the layout with the least block-interface area "
+                         "(docs/parallel.md)."),
+                     1, 1000000, false, false),
+              &CaseConfig::parallel, &ParallelConfig::ranks));
     return s;
 }
 

@@ -35,8 +35,8 @@ public:
     /// Builds the simulation from `config` (InputError for bad input, before anything is
     /// written), on `ranks`. `monitor` must outlive the driver.
     ///
-    /// On several ranks (issue 15; the fluid only so far) every rank steps its block, and rank
-    /// 0 alone writes: the run directory, solver.csv, the progress and messages (the other
+    /// On several ranks (issue 15; every rank holds all bodies) every rank steps its block, and
+    /// rank 0 alone writes: the run directory, solver.csv, the progress and messages (the other
     /// ranks' monitors should be quiet), and the field frames, line samples, summary and
     /// checkpoints of a one-process mirror of the run that the ranks' state is gathered into
     /// first (io/gathering_archive.hpp). The files are those of a one-process run of the same

@@ -228,6 +228,11 @@ struct RunConfig {
         max_memory; ///< refuse a run estimated above this [B]; none: the machine's
 };
 
+/// [parallel]
+struct ParallelConfig {
+    std::vector<int> ranks; ///< ranks along each axis on several processes; empty: chosen
+};
+
 struct CaseConfig {
     std::string source_file; ///< the case file path, for messages
     std::string as_run;      ///< the whole case as TOML, defaults and overrides filled in
@@ -250,6 +255,7 @@ struct CaseConfig {
     OutputConfig output;
     CheckpointConfig checkpoint;
     RunConfig run;
+    ParallelConfig parallel;
 };
 
 } // namespace fddem

@@ -27,16 +27,6 @@ double rim_speed(const Vec<Dim>& velocity, const AngularVec<Dim>& omega, double 
     return velocity.norm() + magnitude<Dim>(omega) * radius;
 }
 
-/// The values of a list of small vectors (λ on the markers) as one span of doubles; a
-/// Vec<Dim> is Dim contiguous doubles.
-template <int Dim>
-std::span<double> flat(std::vector<Vec<Dim>>& values)
-{
-    static_assert(sizeof(Vec<Dim>) == Dim * sizeof(double));
-    return values.empty() ? std::span<double>()
-                          : std::span<double>(values.front().data(), Dim * values.size());
-}
-
 std::span<double> flat(double& value)
 {
     return {&value, 1};
@@ -281,7 +271,7 @@ void OuterIterations<Dim>::collect_iterate(FluidState<Dim>& state, Particles<Dim
         iterate_.push_back({flat(body.omega), body.radius()});
     }
     for (Particle<Dim>& body : bodies) {
-        iterate_.push_back({flat<Dim>(body.coupling.lambda), 0.0});
+        iterate_.push_back({flat_values<Dim>(body.coupling.lambda), 0.0});
     }
     for (int a = 0; a < Dim; ++a) {
         iterate_.push_back({state.u[a].values(), 0.0});

@@ -39,17 +39,20 @@ MacGrid<Dim> make_grid(const CaseConfig& config, const Communicator& ranks)
     if (ranks.size() == 1) {
         return MacGrid<Dim>(cells, origin, length, is_periodic);
     }
-    if (!config.bodies.empty()) {
-        throw InputError(config.source_file, 0, "bodies",
-                         fmt::format("the case has {} {}, and bodies on a grid split over "
-                                     "{} MPI ranks are not supported yet (issue 15: only the "
-                                     "fluid is split so far); run it as one process",
-                                     config.bodies.size(),
-                                     config.bodies.size() == 1 ? "body" : "bodies", ranks.size()));
+    Index<Dim> layout{};
+    try {
+        if (config.parallel.ranks.empty()) {
+            layout = choose_rank_layout<Dim>(cells, ranks.size());
+        } else {
+            // parallel.ranks (its entry count is the dimension's: io/case_keys)
+            std::copy_n(config.parallel.ranks.begin(), Dim, layout.begin());
+            check_rank_layout<Dim>(cells, layout, ranks.size());
+        }
+    } catch (const InputError& e) { // the grid's checks do not know the case file
+        throw InputError(config.source_file, 0, e.key(), e.what());
     }
     return MacGrid<Dim>(cells, origin, length, is_periodic,
-                        partition_grid<Dim>(ranks, cells, is_periodic,
-                                            choose_rank_layout<Dim>(cells, ranks.size())));
+                        partition_grid<Dim>(ranks, cells, is_periodic, layout));
 }
 
 template <int Dim>
