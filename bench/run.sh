@@ -21,9 +21,15 @@
 #     to end with --3d full, and the fixed sphere at Re 20 for 20 steps: time per step, outer
 #     iterations per step, ns per cell and outer iteration, the share of each phase, peak memory
 #     per cell.
+#  7. with --mpi [P]: strong and weak scaling over MPI ranks p = 1, 2, 4, … ≤ P (default 4;
+#     issue 15), through `mpirun -n p fddem run` on the lid-driven cube (docs/examples/
+#     cavity3d.toml, Re 100, hypre, 10 steps): strong on 48³ cells, weak on 32³ cells per rank
+#     (the box grown along x, then y, then z). Prints the stepping time per step, the speed-up
+#     and the parallel efficiency, and the machine's core count: rows with more ranks than
+#     cores are oversubscribed and say nothing about scaling.
 # The kernel table includes contact detection (cell list vs brute force) for 1e3-1e5 disks.
 # Options: --openfoam [N] (default N = 256), --paper, --steady [R] (default R = 3 rounds),
-# --3d [full], --quick (smaller table), --threads T (default 1).
+# --3d [full], --mpi [P] (default P = 4), --quick (smaller table), --threads T (default 1).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -35,6 +41,8 @@ three_d=0
 three_d_full=0
 steady=0
 steady_rounds=3
+mpi=0
+mpi_ranks=4
 quick=0
 threads=1
 while [ $# -gt 0 ]; do
@@ -44,6 +52,7 @@ while [ $# -gt 0 ]; do
         --paper) paper=1 ;;
         --3d) three_d=1; if [ "${2:-}" = full ]; then three_d_full=1; shift; fi ;;
         --steady) steady=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then steady_rounds="$2"; shift; fi ;;
+        --mpi) mpi=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then mpi_ranks="$2"; shift; fi ;;
         --threads) threads="$2"; shift ;;
         *) echo "bench/run.sh: unknown option '$1'" >&2; exit 2 ;;
     esac
@@ -139,6 +148,35 @@ if [ "$three_d" = 1 ]; then
         rows+=("$name:$dir")
     done
     $python "$here/table.py" three_d "${rows[@]}"
+fi
+
+if [ "$mpi" = 1 ]; then
+    echo
+    echo "== MPI scaling, lid-driven cube (OMP_NUM_THREADS=$threads, $(nproc) cores)"
+    launch=(mpirun --oversubscribe)
+    if [ "$(id -u)" = 0 ]; then launch+=(--allow-run-as-root); fi
+    cube=(docs/examples/cavity3d.toml --force -q --set time.max_steps=10
+          --set output.field_interval=0 --set simple.pressure_solver=hypre)
+    rows=()
+    p=1
+    while [ "$p" -le "$mpi_ranks" ]; do
+        dir="$out/mpi_strong_$p"
+        "${launch[@]}" -n "$p" "$fddem" run "${cube[@]}" -o "$dir" --set "domain.cells=[48,48,48]"
+        rows+=("strong:$p:$dir")
+        # Weak: 32³ cells per rank, the box doubled along x, then y, then z.
+        nx=1; ny=1; nz=1; q=$p; axis=0
+        while [ "$q" -gt 1 ]; do
+            case $axis in 0) nx=$((nx * 2)) ;; 1) ny=$((ny * 2)) ;; 2) nz=$((nz * 2)) ;; esac
+            q=$((q / 2)); axis=$(((axis + 1) % 3))
+        done
+        dir="$out/mpi_weak_$p"
+        "${launch[@]}" -n "$p" "$fddem" run "${cube[@]}" -o "$dir" \
+            --set "domain.cells=[$((32 * nx)),$((32 * ny)),$((32 * nz))]" \
+            --set "domain.size=[$nx,$ny,$nz]"
+        rows+=("weak:$p:$dir")
+        p=$((p * 2))
+    done
+    $python "$here/table.py" mpi "$(nproc)" "${rows[@]}"
 fi
 
 if [ "$steady" = 1 ]; then

@@ -86,6 +86,39 @@ def three_d_table(entries):
         )
 
 
+def mpi_table(cores, entries):
+    """Strong and weak scaling rows (kind:ranks:run_dir), each against its one-rank row."""
+    cores = int(cores)
+    print(f"{'scaling':>7} {'ranks':>5} {'cells':>9} {'ms/step':>9} {'outer/step':>10} "
+          f"{'speed-up':>8} {'efficiency':>10} {'pressure %':>10} {'momentum %':>10} "
+          f"{'msgs/step':>9} {'KiB/step':>8} {'coll/step':>9}")
+    base = {}
+    for entry in entries:
+        kind, ranks, run_dir = entry.split(":", 2)
+        ranks = int(ranks)
+        steps, stepping, phases, outer, summary = run_costs(run_dir)
+        with open(os.path.join(run_dir, "case.toml"), "rb") as f:
+            cells = tomllib.load(f)["domain"]["cells"]
+        per_step = stepping / steps
+        if ranks == 1:
+            base[kind] = per_step
+        # Strong: T1 / (p Tp); weak (the work grows with p): T1 / Tp.
+        speed_up = base[kind] / per_step if kind in base else float("nan")
+        efficiency = speed_up / ranks if kind == "strong" else speed_up
+        note = "  (oversubscribed)" if ranks > cores else ""
+        messages = summary.get("mpi_rank0_messages", 0) / steps
+        kib = summary.get("mpi_rank0_message_bytes", 0) / steps / 1024
+        collectives = summary.get("mpi_rank0_collectives", 0) / steps
+        print(f"{kind:>7} {ranks:>5} {'x'.join(str(c) for c in cells):>9} "
+              f"{1e3 * per_step:>9.1f} {outer / steps:>10.2f} {speed_up:>8.2f} "
+              f"{efficiency:>10.2f} {100 * phases.get('pressure', 0) / stepping:>10.1f} "
+              f"{100 * phases.get('momentum', 0) / stepping:>10.1f} {messages:>9.0f} "
+              f"{kib:>8.0f} {collectives:>9.0f}{note}")
+    print("  speed-up: T(1 rank) / T(p) per step; efficiency: speed-up / p (strong), speed-up "
+          "(weak, p times the cells). msgs, KiB, coll: rank 0's halo messages, their payload and "
+          "its collectives per step (hypre's own messages not counted).")
+
+
 def read_xy(path, skip_header=True):
     rows = []
     with open(path) as f:
@@ -300,7 +333,8 @@ def steady_table(steady_dir, peer_results, cases_dir):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("mode", choices=["cavity", "openfoam", "ghia", "paper", "steady", "three_d"])
+    parser.add_argument("mode", choices=["cavity", "openfoam", "ghia", "paper", "steady", "three_d",
+                                         "mpi"])
     parser.add_argument("args", nargs="+")
     options = parser.parse_args()
     if options.mode == "cavity":
@@ -311,6 +345,8 @@ def main():
         paper_table(options.args)
     elif options.mode == "three_d":
         three_d_table(options.args)
+    elif options.mode == "mpi":
+        mpi_table(options.args[0], options.args[1:])
     elif options.mode == "steady":
         steady_table(*options.args)
     else:

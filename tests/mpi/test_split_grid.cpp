@@ -161,6 +161,44 @@ GridArray<Dim> labelled(const MacGrid<Dim>& grid, int kind)
     return a;
 }
 
+TYPED_TEST(SplitGridTest, TrafficCountsEachHaloMessageAndCollective)
+{
+    constexpr int Dim = TypeParam::value;
+    const Communicator world = Communicator::world();
+    // Slabs along the first axis, bounded: a rank sends one message per array and block side
+    // that faces another block (none on one process).
+    Index<Dim> ranks;
+    ranks.fill(1);
+    ranks[0] = world.size();
+    std::array<bool, Dim> periodic{};
+    const GridPair<Dim> g = make_grids<Dim>(ranks, periodic);
+    const Communicator& comm = g.split.communicator();
+    const Traffic before = comm.traffic();
+    GridArray<Dim> a(g.split);
+    HaloExchange<Dim>(g.split).fill(a);
+    const Traffic after_fill = comm.traffic();
+    const auto [below, above] = g.split.partition().neighbours[0];
+    const long sides =
+        (below != Communicator::no_rank ? 1 : 0) + (above != Communicator::no_rank ? 1 : 0);
+    EXPECT_EQ(after_fill.messages - before.messages, sides);
+    // Layers sent: the first 3 down and the last 2 up, each over the storage across the axis.
+    const Box<Dim> storage = g.split.storage_box();
+    const long layer = static_cast<long>(storage.size()) / storage.extent(0);
+    const long layers =
+        (below != Communicator::no_rank ? 3 : 0) + (above != Communicator::no_rank ? 2 : 0);
+    EXPECT_EQ(after_fill.bytes - before.bytes, layers * layer * static_cast<long>(sizeof(double)));
+    EXPECT_EQ(after_fill.collectives, before.collectives);
+    std::vector<double> totals(5, 1.0);
+    comm.sum(totals);
+    const Traffic after_sum = comm.traffic();
+    EXPECT_EQ(after_sum.messages, after_fill.messages);
+    // Counted whenever the communicator is MPI's (one process through mpirun included).
+    EXPECT_EQ(after_sum.collectives - after_fill.collectives, comm.uses_mpi() ? 1 : 0);
+    EXPECT_EQ(after_sum.collective_bytes - after_fill.collective_bytes,
+              comm.uses_mpi() ? 5 * static_cast<long>(sizeof(double)) : 0);
+    EXPECT_DOUBLE_EQ(totals[0], world.size());
+}
+
 TYPED_TEST(SplitGridTest, FillGivesEveryEntryItsOneProcessValue)
 {
     constexpr int Dim = TypeParam::value;

@@ -23,6 +23,8 @@ struct MpiCommunicator {
     int rank = 0;
     int size = 1;
     bool is_cartesian = false;
+    /// Counted as the calls go (MPI is called from the main thread only).
+    mutable Traffic sent;
 
     MpiCommunicator(MPI_Comm c, bool owned) : comm(c), is_owned(owned)
     {
@@ -90,12 +92,24 @@ int Communicator::size() const noexcept
     return mpi_ ? mpi_->size : 1;
 }
 
+Traffic Communicator::traffic() const noexcept
+{
+    return mpi_ ? mpi_->sent : Traffic{};
+}
+
+void Communicator::count_collective(std::size_t bytes) const noexcept
+{
+    ++mpi_->sent.collectives;
+    mpi_->sent.collective_bytes += static_cast<long>(bytes);
+}
+
 double Communicator::max(double local) const
 {
     if (!mpi_) {
         return local;
     }
     // Gathered rather than MPI_MAX: a NaN must win (MPI_MAX's comparison would drop it).
+    count_collective(sizeof(double));
     std::vector<double> all(static_cast<std::size_t>(mpi_->size));
     check(MPI_Allgather(&local, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, mpi_->comm),
           "MPI_Allgather");
@@ -124,6 +138,7 @@ void Communicator::sum(std::span<double> values) const
     // Every rank's partial values, then added in rank order on every rank: the same bits on
     // each, and in each rerun (MPI_Allreduce leaves the order of additions open).
     const auto n = values.size();
+    count_collective(n * sizeof(double));
     std::vector<double> all(n * static_cast<std::size_t>(mpi_->size));
     check(MPI_Allgather(values.data(), static_cast<int>(n), MPI_DOUBLE, all.data(),
                         static_cast<int>(n), MPI_DOUBLE, mpi_->comm),
@@ -144,6 +159,7 @@ void Communicator::broadcast(std::string& bytes) const
     }
     auto size = static_cast<unsigned long long>(bytes.size());
     check(MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, mpi_->comm), "MPI_Bcast");
+    count_collective(mpi_->rank == 0 ? static_cast<std::size_t>(size) : 0);
     bytes.resize(static_cast<std::size_t>(size));
     // In pieces below MPI's int count limit.
     constexpr std::size_t piece = std::size_t{1} << 30;
@@ -171,6 +187,10 @@ void Communicator::exchange(std::span<const double> send, int destination,
     }
     const int to = destination == no_rank ? MPI_PROC_NULL : destination;
     const int from = source == no_rank ? MPI_PROC_NULL : source;
+    if (to != MPI_PROC_NULL) {
+        ++mpi_->sent.messages;
+        mpi_->sent.bytes += static_cast<long>(send.size() * sizeof(double));
+    }
     check(MPI_Sendrecv(send.data(), static_cast<int>(send.size()), MPI_DOUBLE, to, tag,
                        receive.data(), static_cast<int>(receive.size()), MPI_DOUBLE, from, tag,
                        mpi_->comm, MPI_STATUS_IGNORE),

@@ -13,6 +13,7 @@
 /// gathered partial values, not by MPI_Allreduce, whose order of additions the MPI standard
 /// leaves open: the same ranks then give bit-identical reruns.
 
+#include <cstddef>
 #include <memory>
 #include <span>
 #include <string>
@@ -23,6 +24,16 @@ namespace fddem {
 namespace detail {
 struct MpiCommunicator; // communicator.cpp: holds the MPI_Comm, so mpi.h stays out of headers
 }
+
+/// What this rank has sent through one communicator since it was made (issue 15's message
+/// counts): the halo exchange's point-to-point messages and the collectives (sums, maxima,
+/// broadcasts) it took part in. hypre's own messages, on a duplicate of the handle, are not here.
+struct Traffic {
+    long messages = 0;         ///< point-to-point sends to another rank
+    long bytes = 0;            ///< their payload [B]
+    long collectives = 0;      ///< reductions and broadcasts
+    long collective_bytes = 0; ///< this rank's contribution to them [B]
+};
 
 class Communicator {
 public:
@@ -61,6 +72,9 @@ public:
     void exchange(std::span<const double> send, int destination, std::span<double> receive,
                   int source, int tag) const;
 
+    /// This rank's traffic through this communicator so far (zero on self()).
+    [[nodiscard]] Traffic traffic() const noexcept;
+
     /// The ranks laid out as a Cartesian grid of dims[0] × … processes (MPI_Cart_create, ranks
     /// in the same order), periodic where `is_periodic` says. The product of `dims` must be
     /// size(). On this process alone (all dims 1) the result is self().
@@ -73,6 +87,9 @@ public:
     [[nodiscard]] std::pair<int, int> cartesian_neighbours(int axis, bool axis_is_periodic) const;
 
 private:
+    /// Adds one collective of `bytes` from this rank to traffic(); needs MPI.
+    void count_collective(std::size_t bytes) const noexcept;
+
     friend struct CommunicatorAccess; // communicator.cpp: the MPI_Comm for hypre and FFTW-MPI
 
     explicit Communicator(std::shared_ptr<const detail::MpiCommunicator> mpi) noexcept

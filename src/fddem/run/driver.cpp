@@ -237,7 +237,8 @@ template <int Dim>
 void Driver<Dim>::write_summary(const std::string& status) const
 {
     write_run_summary(mirror_ ? *mirror_ : sim_, config_, record_, status,
-                      directory_ / "summary.json");
+                      directory_ / "summary.json", ranks_.size(),
+                      sim_.grid().communicator().traffic());
 }
 
 template class Driver<2>;

@@ -56,7 +56,7 @@ void set_body_values(RunSummary& summary, const Simulation<Dim>& sim, const Case
 template <int Dim>
 void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
                        const RunRecord& record, const std::string& status,
-                       const std::filesystem::path& path)
+                       const std::filesystem::path& path, int ranks, const Traffic& traffic)
 {
     const StepReport& last = record.last;
     RunSummary summary;
@@ -79,6 +79,13 @@ void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
         summary.set("build_" + name, value);
     }
     set_phase_times(summary, sim, record.wall_seconds);
+    if (ranks > 1) {
+        summary.set("mpi_ranks", static_cast<long>(ranks));
+        summary.set("mpi_rank0_messages", traffic.messages);
+        summary.set("mpi_rank0_message_bytes", traffic.bytes);
+        summary.set("mpi_rank0_collectives", traffic.collectives);
+        summary.set("mpi_rank0_collective_bytes", traffic.collective_bytes);
+    }
     if (!config.bodies.empty()) {
         set_body_values(summary, sim, config, record);
     }
@@ -86,8 +93,10 @@ void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
 }
 
 template void write_run_summary(const Simulation<2>&, const CaseConfig&, const RunRecord&,
-                                const std::string&, const std::filesystem::path&);
+                                const std::string&, const std::filesystem::path&, int,
+                                const Traffic&);
 template void write_run_summary(const Simulation<3>&, const CaseConfig&, const RunRecord&,
-                                const std::string&, const std::filesystem::path&);
+                                const std::string&, const std::filesystem::path&, int,
+                                const Traffic&);
 
 } // namespace fddem

@@ -11,10 +11,12 @@
 
 namespace fddem {
 
-/// Writes `path` atomically; `status` is "completed", "failed: …" or "interrupted by …".
+/// Writes `path` atomically; `status` is "completed", "failed: …" or "interrupted by …". On
+/// `ranks` > 1 processes it adds them and rank 0's `traffic` (its messages and collectives).
 template <int Dim>
 void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
                        const RunRecord& record, const std::string& status,
-                       const std::filesystem::path& path);
+                       const std::filesystem::path& path, int ranks = 1,
+                       const Traffic& traffic = {});
 
 } // namespace fddem
