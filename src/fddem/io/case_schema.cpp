@@ -446,6 +446,14 @@ std::vector<KeySpec> case_schema()
                           "piles); additive: the mean contact force of the sub-steps is added "
                           "to (13)–(14) (unstable when collisions are much shorter than Δt)."),
                       &CaseConfig::contact, &ContactConfig::coupling));
+    s.push_back(bound(key("contact", "fluid_force", T::string, none, "\"none\"",
+                          "The fluid's force on a body during the DEM sub-steps: none (the "
+                          "paper: its buoyant weight only; with the paper coupling a body the DEM "
+                          "moves, in contact or within the margin or the lubrication range, then "
+                          "feels no resolved fluid force) or held (the resolved hydrodynamic "
+                          "force and torque of the step before, held constant over the sub-steps "
+                          "in which it touches nothing; docs/method.md §5, Coupling)."),
+                      &CaseConfig::contact, &ContactConfig::fluid_force));
     s.push_back(bound(positive(key("contact", "stiffness", T::real, "N/m", "none",
                                    "Linear: spring stiffness k (2D: per unit depth); or give "
                                    "restitution and duration instead.")),

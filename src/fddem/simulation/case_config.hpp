@@ -167,8 +167,9 @@ struct ContactDerived {
 struct ContactConfig {
     ContactModelKind model = ContactModelKind::linear;
     ContactCoupling coupling = ContactCoupling::paper;
-    std::optional<double> stiffness;               ///< linear: k [N/m]
-    std::optional<double> damping;                 ///< linear: c [N·s/m]
+    ContactFluidForce fluid_force = ContactFluidForce::none; ///< on a body in the sub-steps
+    std::optional<double> stiffness;                         ///< linear: k [N/m]
+    std::optional<double> damping;                           ///< linear: c [N·s/m]
     std::optional<double> duration;                ///< linear: t_c of a wall collision [s]
     double tangential_stiffness_ratio = 2.0 / 7.0; ///< linear, adaptive: κ = k_t / k
     std::optional<double> impact_velocity;         ///< hertz_mindlin: the fastest impact [m/s]
