@@ -431,6 +431,14 @@ std::vector<KeySpec> case_schema()
                           "divergence-free (Uhlmann 2005); false: after the pressure correction, "
                           "as the paper (docs/method.md §4)."),
                       &CaseConfig::coupling, &CouplingConfig::is_forcing_before_projection));
+    s.push_back(bound(key("coupling", "markers_off_at_walls", T::boolean, none, "false",
+                          "Switch off, for the outer iteration, every marker whose kernel support "
+                          "reaches a wall (closer to it than the kernel's half width): no force, "
+                          "and its fluid velocity taken as the body's in (13)–(14). The kernel "
+                          "reads the wall's odd ghost images there, which turns the forcing's "
+                          "feedback around (docs/method.md §5, the stall in contact). false: every "
+                          "marker acts, as the paper."),
+                      &CaseConfig::coupling, &CouplingConfig::is_wall_marker_off));
 
     s.push_back(bound(key("contact", "model", T::string, none, "\"linear\"",
                           "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "

@@ -149,6 +149,9 @@ struct CouplingConfig {
     /// Eqs. (15)–(16) between the momentum solve and the pressure correction, so that each
     /// outer iteration ends divergence-free (Uhlmann 2005), not after the correction (the paper)
     bool is_forcing_before_projection = false;
+    /// Markers whose kernel support reaches a wall (closer to it than the kernel's half width)
+    /// take no part in eqs. (13)–(16) (Kempe & Fröhlich 2012b, as Biegert et al. 2017 report)
+    bool is_wall_marker_off = false;
 };
 
 /// What the reader derives for the DEM collision model (eq. (18)) from [contact] and the bodies.
