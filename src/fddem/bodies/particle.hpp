@@ -55,11 +55,15 @@ template <int Dim>
 struct ContactState {
     Vec<Dim> steady_force = Vec<Dim>::Zero(); ///< held over the step: the buoyant weight [N]
     AngularVec<Dim> steady_torque = zero_angular<Dim>(); ///< [N·m]
-    Vec<Dim> centre = Vec<Dim>::Zero();                  ///< at the end of the sub-steps [m]
-    Vec<Dim> velocity = Vec<Dim>::Zero();                ///< [m/s]
-    AngularVec<Dim> omega = zero_angular<Dim>();         ///< [rad/s]
-    Vec<Dim> mean_force = Vec<Dim>::Zero();              ///< contact impulse / Δt [N]
-    AngularVec<Dim> mean_torque = zero_angular<Dim>();   ///< [N·m]
+    /// The resolved fluid force held over the sub-steps in which the body touches nothing
+    /// (contact.fluid_force = "held"; zero otherwise) [N].
+    Vec<Dim> held_fluid_force = Vec<Dim>::Zero();
+    AngularVec<Dim> held_fluid_torque = zero_angular<Dim>(); ///< [N·m]
+    Vec<Dim> centre = Vec<Dim>::Zero();                      ///< at the end of the sub-steps [m]
+    Vec<Dim> velocity = Vec<Dim>::Zero();                    ///< [m/s]
+    AngularVec<Dim> omega = zero_angular<Dim>();             ///< [rad/s]
+    Vec<Dim> mean_force = Vec<Dim>::Zero();                  ///< contact impulse / Δt [N]
+    AngularVec<Dim> mean_torque = zero_angular<Dim>();       ///< [N·m]
     /// The lubrication part of mean_force and mean_torque (outputs show the two apart).
     Vec<Dim> lubrication_force = Vec<Dim>::Zero();
     AngularVec<Dim> lubrication_torque = zero_angular<Dim>(); ///< [N·m]

@@ -33,6 +33,12 @@ enum class ContactModelKind { linear, hertz_mindlin, adaptive, none };
 /// (17) while in contact) or additive (the mean contact force is added to (13)–(14)).
 enum class ContactCoupling { paper, additive };
 
+/// What the resolved fluid does to a body during the DEM sub-steps (contact.fluid_force): none
+/// (the paper's eq. (18): the buoyant weight only) or held (the resolved hydrodynamic force and
+/// torque of the step before, held constant over the sub-steps in which the body touches
+/// nothing, as resolved codes hold the fluid force over their collision sub-steps).
+enum class ContactFluidForce { none, held };
+
 struct ContactModelEntry {
     ContactModelKind kind;
     std::string_view name;     ///< the case-file name

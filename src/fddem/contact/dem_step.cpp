@@ -33,8 +33,8 @@ public:
     ContactForces(std::span<const Particle<Dim>> bodies, const DemWalls<Dim>& walls,
                   const Model& model, ContactHistory<Dim>& history, double margin,
                   const LubricationSettings& lubrication, const CellList<Dim>& cells, double dt)
-        : force(bodies.size()), torque(bodies.size()), has_contact(bodies.size()), walls_(walls),
-          model_(model), history_(history), dt_(dt),
+        : force(bodies.size()), torque(bodies.size()), has_contact(bodies.size()),
+          touching(bodies.size()), walls_(walls), model_(model), history_(history), dt_(dt),
           margin_(lubrication.is_enabled ? std::max(margin, lubrication.range) : margin),
           domain_(cells.domain()),
           neighbours_(std::max(margin, lubrication.is_enabled ? lubrication.range : 0.0),
@@ -55,6 +55,7 @@ public:
     {
         std::fill(force.begin(), force.end(), Vec<Dim>::Zero());
         std::fill(torque.begin(), torque.end(), zero_angular<Dim>());
+        std::fill(touching.begin(), touching.end(), char{0});
         centres_.resize(bodies.size());
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             centres_[b] = bodies[b].contact.centre;
@@ -136,6 +137,7 @@ public:
     std::vector<Vec<Dim>> force;
     std::vector<AngularVec<Dim>> torque;
     std::vector<char> has_contact; ///< touched (or came within the margin) during the step
+    std::vector<char> touching;    ///< overlaps a body or a wall at the state last evaluated
     int in_contact = 0;
 
 private:
@@ -186,6 +188,10 @@ private:
         outcome.max_relative_overlap =
             std::max(outcome.max_relative_overlap, g.overlap / smaller_radius);
         mark(first, second);
+        touching[first] = 1;
+        if (second < force.size()) {
+            touching[second] = 1;
+        }
         ++in_contact;
     }
 
@@ -303,10 +309,18 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
         ContactState<Dim>& c = bodies[b].contact;
         c.mean_force += 0.5 * weight * contacts.force[b];
         c.mean_torque += 0.5 * weight * contacts.torque[b];
-        c.velocity = half_kick(c.velocity, Vec<Dim>(contacts.force[b] + c.steady_force),
+        // The held fluid force (contact.fluid_force) acts only while the body touches nothing:
+        // during a contact the contact model alone acts (Kempe & Fröhlich 2012 neglect the
+        // fluid force in contact, as Biegert et al. 2017 report; docs/method.md §5).
+        const bool is_touching = contacts.touching[b] != 0;
+        const Vec<Dim> fluid = is_touching ? Vec<Dim>::Zero() : c.held_fluid_force;
+        const AngularVec<Dim> fluid_torque =
+            is_touching ? zero_angular<Dim>() : c.held_fluid_torque;
+        c.velocity = half_kick(c.velocity, Vec<Dim>(contacts.force[b] + c.steady_force + fluid),
                                body.mass(), settings.beta, half);
-        c.omega = half_kick(c.omega, AngularVec<Dim>(contacts.torque[b] + c.steady_torque),
-                            body.inertia(), settings.beta, half);
+        c.omega =
+            half_kick(c.omega, AngularVec<Dim>(contacts.torque[b] + c.steady_torque + fluid_torque),
+                      body.inertia(), settings.beta, half);
     };
     for (int s = 0; s < settings.substeps; ++s) {
         for (std::size_t b = 0; b < n; ++b) {

@@ -7,6 +7,7 @@
 #include "fddem/grid/halo_exchange.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace fddem {
 namespace {
@@ -62,15 +63,52 @@ void interpolate_at_markers(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
     }
 }
 
+/// Whether the kernel support of a marker at `x` reaches a wall: closer to a non-periodic side
+/// than the kernel's half width. There the interpolation reads the wall's ghosts, which are odd
+/// images of the fluid beside the wall (fluid/boundary_conditions.cpp): forcing that fluid one
+/// way makes the marker read it the other way, and eq. (15)'s correction then grows the fluid
+/// velocity instead of removing the slip.
+template <int Dim, class Kernel>
+bool reaches_wall(const MacGrid<Dim>& grid, const Vec<Dim>& x)
+{
+    const PeriodicDomain<Dim> domain = grid.domain();
+    for (int d = 0; d < Dim; ++d) {
+        if (domain.periodic(d)) {
+            continue;
+        }
+        const double reach = Kernel::half_width * grid.spacing()[d];
+        if (x[d] - domain.origin[d] < reach || domain.origin[d] + domain.length[d] - x[d] < reach) {
+            return true;
+        }
+    }
+    return false;
+}
+
 template <int Dim, class Kernel>
 double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
                   FaceField<Dim>& u)
 {
     MarkerCoupling<Dim>& c = body.coupling;
     interpolate_at_markers<Dim, Kernel>(grid, u, c); // I(u)
+    std::vector<char> is_off(s.is_wall_marker_off ? c.markers.size() : 0, 0);
+    for (std::size_t l = 0; l < is_off.size(); ++l) {
+        if (reaches_wall<Dim, Kernel>(grid, c.positions[l])) {
+            // coupling.markers_off_at_walls (Kempe & Fröhlich 2012b, as Biegert et al. 2017
+            // report): no force; its fluid moves with the body in eqs. (13)–(14). Decided from
+            // the position alone, so alike on every rank of a split grid.
+            is_off[l] = 1;
+            c.fluid[l] = body.velocity + cross(body.omega, c.offsets[l]);
+            c.lambda_star[l] = Vec<Dim>::Zero();
+        }
+    }
     const RigidVelocity<Dim> motion = new_motion(body, s);
     const double defect = update_marker_force<Dim>(motion, c.offsets, c.fluid, c.lambda_star, s.dt,
                                                    c.lambda); // eq. (15)
+    for (std::size_t l = 0; l < is_off.size(); ++l) {
+        if (is_off[l] != 0) {
+            c.lambda[l] = Vec<Dim>::Zero();
+        }
+    }
     c.forcing_change = forcing_change<Dim>(c.offsets, c.markers.volumes, c.lambda, c.lambda_star,
                                            s.dt, body.volume(), body.radius());
     // eq. (16): u ← u + Δt D(λ − λ*). Across a periodic side the ghosts collect what belongs

@@ -37,6 +37,9 @@ struct RigidUpdateSettings {
     /// w of core/time_scheme.hpp: the level-n motion of eqs. (13)–(14) is
     /// Ũ^n = U^n + w (U^n − U^{n−1}) (likewise ω); 0 for implicit Euler
     double history_weight = 0.0;
+    /// coupling.markers_off_at_walls: markers whose kernel support reaches a wall of `walls`
+    /// (a non-periodic side) take no part (λ = 0; their u_l in (13)–(14) the body's own motion)
+    bool is_wall_marker_off = false;
 };
 
 /// Eqs. (13)–(16) for every body, in the order of the store; `u` needs its ghosts filled.

@@ -94,6 +94,11 @@ constexpr auto case_names(ContactCoupling /*tag*/)
     using enum ContactCoupling;
     return std::to_array<EnumName<ContactCoupling>>({{additive, "additive"}, {paper, "paper"}});
 }
+constexpr auto case_names(ContactFluidForce /*tag*/)
+{
+    using enum ContactFluidForce;
+    return std::to_array<EnumName<ContactFluidForce>>({{none, "none"}, {held, "held"}});
+}
 constexpr auto case_names(LubricationInContact /*tag*/)
 {
     using enum LubricationInContact;

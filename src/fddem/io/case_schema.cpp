@@ -431,6 +431,14 @@ std::vector<KeySpec> case_schema()
                           "divergence-free (Uhlmann 2005); false: after the pressure correction, "
                           "as the paper (docs/method.md §4)."),
                       &CaseConfig::coupling, &CouplingConfig::is_forcing_before_projection));
+    s.push_back(bound(key("coupling", "markers_off_at_walls", T::boolean, none, "false",
+                          "Switch off, for the outer iteration, every marker whose kernel support "
+                          "reaches a wall (closer to it than the kernel's half width): no force, "
+                          "and its fluid velocity taken as the body's in (13)–(14). The kernel "
+                          "reads the wall's odd ghost images there, which turns the forcing's "
+                          "feedback around (docs/method.md §5, the stall in contact). false: every "
+                          "marker acts, as the paper."),
+                      &CaseConfig::coupling, &CouplingConfig::is_wall_marker_off));
 
     s.push_back(bound(key("contact", "model", T::string, none, "\"linear\"",
                           "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "
@@ -446,6 +454,14 @@ std::vector<KeySpec> case_schema()
                           "piles); additive: the mean contact force of the sub-steps is added "
                           "to (13)–(14) (unstable when collisions are much shorter than Δt)."),
                       &CaseConfig::contact, &ContactConfig::coupling));
+    s.push_back(bound(key("contact", "fluid_force", T::string, none, "\"none\"",
+                          "The fluid's force on a body during the DEM sub-steps: none (the "
+                          "paper: its buoyant weight only; with the paper coupling a body the DEM "
+                          "moves, in contact or within the margin or the lubrication range, then "
+                          "feels no resolved fluid force) or held (the resolved hydrodynamic "
+                          "force and torque of the step before, held constant over the sub-steps "
+                          "in which it touches nothing; docs/method.md §5, Coupling)."),
+                      &CaseConfig::contact, &ContactConfig::fluid_force));
     s.push_back(bound(positive(key("contact", "stiffness", T::real, "N/m", "none",
                                    "Linear: spring stiffness k (2D: per unit depth); or give "
                                    "restitution and duration instead.")),

@@ -149,6 +149,9 @@ struct CouplingConfig {
     /// Eqs. (15)–(16) between the momentum solve and the pressure correction, so that each
     /// outer iteration ends divergence-free (Uhlmann 2005), not after the correction (the paper)
     bool is_forcing_before_projection = false;
+    /// Markers whose kernel support reaches a wall (closer to it than the kernel's half width)
+    /// take no part in eqs. (13)–(16) (Kempe & Fröhlich 2012b, as Biegert et al. 2017 report)
+    bool is_wall_marker_off = false;
 };
 
 /// What the reader derives for the DEM collision model (eq. (18)) from [contact] and the bodies.
@@ -167,8 +170,9 @@ struct ContactDerived {
 struct ContactConfig {
     ContactModelKind model = ContactModelKind::linear;
     ContactCoupling coupling = ContactCoupling::paper;
-    std::optional<double> stiffness;               ///< linear: k [N/m]
-    std::optional<double> damping;                 ///< linear: c [N·s/m]
+    ContactFluidForce fluid_force = ContactFluidForce::none; ///< on a body in the sub-steps
+    std::optional<double> stiffness;                         ///< linear: k [N/m]
+    std::optional<double> damping;                           ///< linear: c [N·s/m]
     std::optional<double> duration;                ///< linear: t_c of a wall collision [s]
     double tangential_stiffness_ratio = 2.0 / 7.0; ///< linear, adaptive: κ = k_t / k
     std::optional<double> impact_velocity;         ///< hertz_mindlin: the fastest impact [m/s]

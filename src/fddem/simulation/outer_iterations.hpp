@@ -122,7 +122,8 @@ private:
     MomentumSettings momentum_;
     Vec<Dim> gravity_;
     bool is_paper_contact_;
-    TimeScheme scheme_; ///< time.scheme
+    bool is_wall_marker_off_; ///< coupling.markers_off_at_walls
+    TimeScheme scheme_;       ///< time.scheme
     double dt_ = 0.0;
 
     std::vector<MomentumSystem<Dim>> systems_;

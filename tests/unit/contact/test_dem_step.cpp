@@ -90,6 +90,42 @@ TEST(DemStep, WallCollisionGivesTheAnalyticRestitution)
     }
 }
 
+TEST(DemStep, HeldFluidForceActsWhileApartAndNotWhileTouching)
+{
+    // contact.fluid_force = "held" (docs/method.md §5, Coupling): the resolved force of the step
+    // before acts on a body the DEM moves while it touches nothing, and not while it touches.
+    const auto law = LinearSpringDashpot::from_restitution(
+        0.8, 2.5e-4, disk(Vec<2>::Zero(), Vec<2>::Zero()).mass());
+    const double dt = 1e-4;
+    DemSettings settings = linear(law, 20, disk(Vec<2>::Zero(), Vec<2>::Zero()).mass());
+    settings.margin = 0.05; // apart but within the margin: the DEM moves it (has_contact)
+    const Vec<2> held(0.3, 2.0);
+    const Vec<2> weight(0.0, -1.0);
+    // Apart: 0.02 above the floor, slow, never touching within the step.
+    std::vector<Particle<2>> apart{disk(Vec<2>(1.0, 0.145), Vec<2>(0.0, -0.1))};
+    apart[0].contact.steady_force = weight;
+    apart[0].contact.held_fluid_force = held;
+    CellList<2> cells(box.origin, box.length, 0.5);
+    ContactHistory<2> history;
+    (void)advance_contacts<2>(apart, box, settings, dt, cells, history);
+    const Particle<2>& a = apart[0];
+    EXPECT_TRUE(a.contact.is_in_contact);
+    const Vec<2> expected = a.velocity + (held + weight) * dt / a.mass();
+    EXPECT_NEAR((a.contact.velocity - expected).norm(), 0.0, 1e-14);
+    // Touching through the whole step (just touched, moving in; the step is 0.4 of the
+    // collision): the same end state with and without the held force.
+    const auto touching = [&](const Vec<2>& fluid) {
+        std::vector<Particle<2>> bodies{disk(Vec<2>(1.0, 0.125 - 1e-6), Vec<2>(0.0, -0.5))};
+        bodies[0].contact.steady_force = weight;
+        bodies[0].contact.held_fluid_force = fluid;
+        ContactHistory<2> fresh;
+        (void)advance_contacts<2>(bodies, box, settings, dt, cells, fresh);
+        EXPECT_LT(bodies[0].contact.centre.y(), 0.125); // still overlapping at the end
+        return bodies[0].contact.velocity;
+    };
+    EXPECT_EQ((touching(held) - touching(Vec<2>::Zero())).norm(), 0.0);
+}
+
 TEST(DemStep, PairCollisionConservesMomentumAndGivesTheRestitution)
 {
     const double e = 0.7;

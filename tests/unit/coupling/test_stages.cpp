@@ -167,6 +167,41 @@ TEST(RigidUpdate, ABodyMovingWithTheFluidNeedsNoForce)
     EXPECT_NEAR(u[0](Index<2>{16, 16}), 0.2, 1e-14);
 }
 
+TEST(RigidUpdate, MarkersReachingAWallAreOffOnlyWhenAsked)
+{
+    // coupling.markers_off_at_walls: a disk 0.01 above the floor of a box at rest, moving up; its
+    // markers within one h (the hat kernel's half width) of a wall get no force, the others the
+    // slip's; without the option every marker gets it.
+    const MacGrid<2> grid = unit_box();
+    const double h = 1.0 / 32.0;
+    const auto run = [&](bool is_off) {
+        std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.16))};
+        bodies[0].motion = Motion::prescribed; // moves at its velocity whatever the fluid
+        bodies[0].velocity_n = Vec<2>(0.0, 0.2);
+        bodies[0].velocity = Vec<2>(0.0, 0.2);
+        FaceField<2> u(grid);
+        place_markers<2>(bodies, grid, AnyKernel{HatKernel{}}, 0, 0.0);
+        RigidUpdateSettings<2> settings{1.0, Vec<2>::Zero(), 0.01, false};
+        settings.is_wall_marker_off = is_off;
+        (void)update_rigid_bodies<2>(bodies, grid, AnyKernel{HatKernel{}}, settings, u);
+        return bodies[0].coupling;
+    };
+    const MarkerCoupling<2> off = run(true);
+    const MarkerCoupling<2> on = run(false);
+    int near = 0;
+    for (std::size_t l = 0; l < off.markers.size(); ++l) {
+        const bool is_near = off.positions[l].y() < h;
+        near += is_near ? 1 : 0;
+        EXPECT_NEAR(on.lambda[l].y(), 20.0, 1e-12) << l; // the slip 0.2 over Δt = 0.01
+        if (is_near) {
+            EXPECT_EQ(off.lambda[l].norm(), 0.0) << l;
+        } else {
+            EXPECT_NEAR(off.lambda[l].y(), 20.0, 1e-12) << l;
+        }
+    }
+    EXPECT_GT(near, 0); // the test can tell
+}
+
 TEST(HydrodynamicForce, IsTheMomentumBalanceOfTheMarkers)
 {
     // F_H = ρf V ΔU/Δt − ρf Σ ΔV_l λ_l; with λ uniform and U unchanged, F_H = −ρf V λ.
