@@ -3,7 +3,8 @@
 // simple.converge_fluid_with_bodies a step with bodies ends only when the fluid's residuals are
 // below the tolerance too; with coupling.force_before_projection every outer iteration ends
 // divergence-free (the marker force acts on u*, then the pressure correction); a retraction that
-// leaves no room for the rings is bad input.
+// leaves no room for the rings is bad input; coupling.markers = "surface" holds a fixed body
+// and refuses a free one.
 
 #include "fddem/core/errors.hpp"
 #include "fddem/fluid/pressure_correction.hpp"
@@ -88,6 +89,43 @@ TEST(CouplingOptions, ARetractionThatLeavesNoRoomForTheRingsIsBadInput)
         EXPECT_EQ(e.key(), "coupling.marker_retraction");
         EXPECT_NE(std::string(e.what()).find("half the radius"), std::string::npos) << e.what();
     }
+}
+
+TEST(CouplingOptions, SurfaceMarkersHoldAFixedBodyAndRefuseAFreeOne)
+{
+    // The surface layout (one ring, no markers inside) leaves eqs. (13)–(14) of a free body
+    // without the fluid momentum inside it: bad input, naming coupling.markers.
+    try {
+        (void)small_cylinder({"coupling.markers=surface", "bodies.motion=free"});
+        FAIL() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.key(), "coupling.markers");
+        EXPECT_NE(std::string(e.what()).find("fixed and prescribed"), std::string::npos)
+            << e.what();
+    }
+    // The fixed cylinder of 2D-1 with it: every step converges, its ring is held at rest as
+    // closely as the retracted layout holds its own (the marker defect of the last outer
+    // iteration, a slip velocity relative to U_ref, within a factor of 2 of it), and the drag
+    // points downstream.
+    double defects[2] = {0.0, 0.0};
+    for (const int layout : {0, 1}) {
+        Simulation<2> sim(
+            small_cylinder({layout == 0 ? "coupling.markers=retracted" : "coupling.markers=surface",
+                            "coupling.marker_spacing_ratio=1.4"}));
+        if (layout == 1) {
+            // R = 5 h, the ring at 4.7 h: 6i markers with i = round(4.7 π/(3 · 1.4)) = 4
+            ASSERT_EQ(sim.bodies()[0].coupling.markers.size(), 24U);
+        }
+        for (int step = 0; step < 5; ++step) {
+            const StepReport report = sim.advance();
+            ASSERT_TRUE(report.is_converged) << layout << ", step " << step;
+            defects[layout] = std::max(defects[layout], report.rigid_defect);
+        }
+        EXPECT_GT(sim.bodies()[0].force[0], 0.0) << layout;
+    }
+    std::printf("largest marker defect / U_ref: retracted %.3e, surface %.3e\n", defects[0],
+                defects[1]);
+    EXPECT_LT(defects[1], 2.0 * defects[0]);
 }
 
 } // namespace

@@ -109,6 +109,26 @@ MarkerSet<Dim> make_retracted_ball_markers(const Ball<Dim>& ball, int n_rings, d
     return ring_markers<Dim>(n_rings, (ball.radius() - retraction) / n_rings, ball.radius());
 }
 
+template <int Dim>
+MarkerSet<Dim> make_surface_ball_markers(const Ball<Dim>& ball, double retraction, double spacing,
+                                         double thickness)
+{
+    const double radius = ball.radius() - retraction;
+    if (!(retraction >= 0.0 && radius > 0.0 && spacing > 0.0 && thickness > 0.0)) {
+        throw InternalError("make_surface_ball_markers: retraction outside [0, R) or a spacing "
+                            "or thickness not positive");
+    }
+    // Ring i of add_ring at ring spacing h_L = radius / i: 6i markers π h_L/3 apart in 2D,
+    // 8 round(π i²/2) in 3D (≈ h_L apart); i from the target spacing.
+    const double per_ring = Dim == 2 ? std::numbers::pi / 3.0 : 1.0;
+    const int i = std::max(1, static_cast<int>(std::lround(radius * per_ring / spacing)));
+    const double area = Dim == 2 ? 2.0 * pi * radius : 4.0 * pi * radius * radius;
+    MarkerSet<Dim> set;
+    set.spacing = radius / i;
+    add_ring<Dim>(set, i, radius / i, area * thickness);
+    return set;
+}
+
 int rings_for_spacing(double radius, double grid_spacing, double ratio)
 {
     return std::max(1, static_cast<int>(std::lround(radius / (ratio * grid_spacing) - 0.5)));
@@ -124,5 +144,7 @@ template MarkerSet<2> make_ball_markers<2>(const Ball<2>&, int);
 template MarkerSet<3> make_ball_markers<3>(const Ball<3>&, int);
 template MarkerSet<2> make_retracted_ball_markers<2>(const Ball<2>&, int, double);
 template MarkerSet<3> make_retracted_ball_markers<3>(const Ball<3>&, int, double);
+template MarkerSet<2> make_surface_ball_markers<2>(const Ball<2>&, double, double, double);
+template MarkerSet<3> make_surface_ball_markers<3>(const Ball<3>&, double, double, double);
 
 } // namespace fddem

@@ -36,6 +36,18 @@ template <int Dim>
 [[nodiscard]] MarkerSet<Dim> make_retracted_ball_markers(const Ball<Dim>& ball, int n_rings,
                                                          double retraction);
 
+/// Markers on one ring (shell) `retraction` inside the surface and none inside it
+/// (`coupling.markers = "surface"`, issue 13): the outermost ring of the retracted layout
+/// alone, its markers about `spacing` apart, each owning an equal share of a shell of thickness
+/// `thickness` (the grid spacing h: the surface markers of Uhlmann 2005, J. Comput. Phys. 209,
+/// whose ΔV_l = h × the marker's share of the surface makes one λ update of eq. (15) remove
+/// most of the slip). Σ ΔV_l is the shell's volume, not the body's: the layout fits a body whose
+/// velocity is given (fixed or prescribed), not eqs. (13)–(14) of a free one, whose fluid
+/// momentum Σ ΔV_l u_l it would miss. 0 ≤ retraction < R, spacing and thickness > 0.
+template <int Dim>
+[[nodiscard]] MarkerSet<Dim> make_surface_ball_markers(const Ball<Dim>& ball, double retraction,
+                                                       double spacing, double thickness);
+
 /// N_a for a target marker spacing h_L ≈ ratio · h: round(R / (ratio h) − ½), at least 1.
 [[nodiscard]] int rings_for_spacing(double radius, double grid_spacing, double ratio);
 

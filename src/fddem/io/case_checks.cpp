@@ -287,6 +287,12 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
         }
     }
     check_apart(doc, c.bodies, dimension);
+    if (c.coupling.markers == MarkerLayout::surface && has_free_body(c)) {
+        doc.fail("coupling.markers", doc.node("coupling", "markers"),
+                 "the surface layout has no markers inside a body, so eqs. (13)–(14) cannot "
+                 "move a free one: use it with fixed and prescribed bodies only, or \"paper\" "
+                 "or \"retracted\"");
+    }
 }
 
 } // namespace fddem

@@ -87,7 +87,8 @@ constexpr auto case_names(TimeScheme /*tag*/)
 constexpr auto case_names(MarkerLayout /*tag*/)
 {
     using enum MarkerLayout;
-    return std::to_array<EnumName<MarkerLayout>>({{paper, "paper"}, {retracted, "retracted"}});
+    return std::to_array<EnumName<MarkerLayout>>(
+        {{paper, "paper"}, {retracted, "retracted"}, {surface, "surface"}});
 }
 constexpr auto case_names(ContactCoupling /*tag*/)
 {

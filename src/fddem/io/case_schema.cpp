@@ -418,13 +418,16 @@ std::vector<KeySpec> case_schema()
                           "retracted (the outermost ring coupling.marker_retraction h inside the "
                           "surface, the rings evenly spaced inside it: drag and settling within "
                           "about 1 % at D/16–D/20, but light bodies accelerate too slowly; "
-                          "docs/method.md §4)."),
+                          "docs/method.md §4) or surface (only that outermost ring, markers "
+                          "about coupling.marker_spacing_ratio h apart, each owning a shell of "
+                          "thickness h; fixed and prescribed bodies only)."),
                       &CaseConfig::coupling, &CouplingConfig::markers));
-    s.push_back(bound(ranged(key("coupling", "marker_retraction", T::real, none, "0.3",
-                                 "With markers = \"retracted\": how far inside the surface the "
-                                 "outermost ring lies, in grid spacings h (0.3: Breugem 2012)."),
-                             0.0, 2.0, false, false),
-                      &CaseConfig::coupling, &CouplingConfig::marker_retraction));
+    s.push_back(bound(
+        ranged(key("coupling", "marker_retraction", T::real, none, "0.3",
+                   "With markers = \"retracted\" or \"surface\": how far inside the surface the "
+                   "outermost ring lies, in grid spacings h (0.3: Breugem 2012)."),
+               0.0, 2.0, false, false),
+        &CaseConfig::coupling, &CouplingConfig::marker_retraction));
     s.push_back(bound(key("coupling", "force_before_projection", T::boolean, none, "false",
                           "Apply the marker force of eqs. (15)–(16) to the momentum solve's u* "
                           "and then correct the pressure, so that every outer iteration ends "

@@ -136,14 +136,15 @@ struct BodyGroupConfig {
 };
 
 /// How the marker rings fill a body (coupling.markers).
-enum class MarkerLayout { paper, retracted };
+enum class MarkerLayout { paper, retracted, surface };
 
 /// [coupling]
 struct CouplingConfig {
     KernelKind kernel = KernelKind::hat; ///< the discrete delta function
     double marker_spacing_ratio = 1.4;   ///< h_L / h when n_rings is not given
     /// Where the marker rings go: the paper's layout (the last ring h_L/2 inside the surface) or
-    /// the outermost ring `marker_retraction` h inside it (issue 13; docs/method.md §4)
+    /// the outermost ring `marker_retraction` h inside it (issue 13; docs/method.md §4), or that
+    /// ring alone (fixed and prescribed bodies only)
     MarkerLayout markers = MarkerLayout::paper;
     double marker_retraction = 0.3; ///< in grid spacings h (Breugem 2012)
     /// Eqs. (15)–(16) between the momentum solve and the pressure correction, so that each

@@ -97,7 +97,8 @@ AngularVec<Dim> angular_of(const std::vector<double>& values)
 }
 
 /// The markers of a ball: the paper's layout, or the outer ring `coupling.marker_retraction` h
-/// inside the surface; N_a from bodies.n_rings, else from coupling.marker_spacing_ratio.
+/// inside the surface, with the rings inside it or alone ("surface"); N_a from bodies.n_rings,
+/// else from coupling.marker_spacing_ratio.
 template <int Dim>
 MarkerSet<Dim> body_markers(const Ball<Dim>& ball, int n_rings, const CaseConfig& config, double h)
 {
@@ -115,6 +116,9 @@ MarkerSet<Dim> body_markers(const Ball<Dim>& ball, int n_rings, const CaseConfig
                                      "refine the grid or lower the retraction",
                                      retraction, coupling.marker_retraction, 0.5 * ball.radius(),
                                      2.0 * ball.radius()));
+    }
+    if (coupling.markers == MarkerLayout::surface) {
+        return make_surface_ball_markers(ball, retraction, ratio * h, h);
     }
     return make_retracted_ball_markers(
         ball,

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
+#include <numbers>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -79,6 +81,40 @@ TEST(Markers, RetractedLayoutWithoutRetractionIsNotThePapers)
     EXPECT_EQ(paper.size(), surface.size());
 }
 
+TYPED_TEST(Markers, SurfaceLayoutIsOneRingOfShellsOfThicknessH)
+{
+    // coupling.markers = "surface": the retracted layout's outermost ring alone, markers about
+    // the target spacing apart, their volumes summing to the shell of thickness h on it.
+    constexpr int Dim = TypeParam::value;
+    const Ball<Dim> ball{1.0};
+    const double h = 1.0 / 20;
+    const double retraction = 0.3 * h;
+    const double r = ball.radius() - retraction;
+    const MarkerSet<Dim> set = make_surface_ball_markers(ball, retraction, 1.4 * h, h);
+    double volume = 0.0;
+    double nearest = 10.0; // the closest pair, the spacing of the ring
+    for (std::size_t l = 0; l < set.size(); ++l) {
+        volume += set.volumes[l];
+        EXPECT_NEAR(set.offsets[l].norm(), r, 1e-14);
+        for (std::size_t m = l + 1; m < set.size(); ++m) {
+            nearest = std::min(nearest, (set.offsets[l] - set.offsets[m]).norm());
+        }
+    }
+    const double area = Dim == 2 ? 2.0 * std::numbers::pi * r : 4.0 * std::numbers::pi * r * r;
+    EXPECT_NEAR(volume / (area * h), 1.0, 1e-13);
+    // 2D: 6i markers π r/(3i) apart on the ring, i = round(π r/(3 · 1.4 h)) = 7: 42 markers.
+    // 3D: 8 round(π i²/2) markers with i = round(r/(1.4 h)) = 7: 616, against the sphere's area
+    // over the spacing squared, 603 (the mirrored spiral puts some pairs closer: the count, not
+    // the nearest pair, is the spacing's measure there).
+    if constexpr (Dim == 2) {
+        EXPECT_EQ(set.size(), 42U);
+        EXPECT_NEAR(nearest / (1.4 * h), 1.0, 0.1);
+    } else {
+        EXPECT_EQ(set.size(), 616U);
+        EXPECT_NEAR(static_cast<double>(set.size()) * std::pow(1.4 * h, 2) / area, 1.0, 0.05);
+    }
+}
+
 /// Every marker layout of a `Dim`-D ball, by name, as a function of N_a. A new layout (the
 /// sphere shells of the "3D spheres" issue, say) is one more entry here, and the symmetry test
 /// below holds it to the same standard.
@@ -88,8 +124,14 @@ marker_layouts()
 {
     return {{"make_ball_markers",
              [](const Ball<Dim>& ball, int n_rings) { return make_ball_markers(ball, n_rings); }},
-            {"make_retracted_ball_markers", [](const Ball<Dim>& ball, int n_rings) {
+            {"make_retracted_ball_markers",
+             [](const Ball<Dim>& ball, int n_rings) {
                  return make_retracted_ball_markers(ball, n_rings, 0.1 * ball.radius());
+             }},
+            {"make_surface_ball_markers", [](const Ball<Dim>& ball, int n_rings) {
+                 // spacing R/N_a: one ring of about as many markers as the N_a-th ring has
+                 return make_surface_ball_markers(ball, 0.1 * ball.radius(),
+                                                  ball.radius() / n_rings, ball.radius() / 20);
              }}};
 }
 
