@@ -91,7 +91,8 @@ def mpi_table(cores, entries):
     cores = int(cores)
     print(f"{'scaling':>7} {'ranks':>5} {'cells':>9} {'ms/step':>9} {'outer/step':>10} "
           f"{'speed-up':>8} {'efficiency':>10} {'pressure %':>10} {'momentum %':>10} "
-          f"{'msgs/step':>9} {'KiB/step':>8} {'coll/step':>9}")
+          f"{'msgs/step':>9} {'KiB/step':>8} {'coll/step':>9} {'comm %':>6} "
+          f"{'comm in mom. %':>14} {'comm in coupl. %':>16}")
     base = {}
     for entry in entries:
         kind, ranks, run_dir = entry.split(":", 2)
@@ -109,14 +110,24 @@ def mpi_table(cores, entries):
         messages = summary.get("mpi_rank0_messages", 0) / steps
         kib = summary.get("mpi_rank0_message_bytes", 0) / steps / 1024
         collectives = summary.get("mpi_rank0_collectives", 0) / steps
+        comm = 100 * summary.get("mpi_rank0_communication_seconds", 0) / stepping
+
+        def share(phase):
+            seconds = phases.get(phase, 0)
+            own = summary.get(f"mpi_rank0_communication_seconds_{phase}", 0)
+            return 100 * own / seconds if seconds > 0 else 0.0
+
         print(f"{kind:>7} {ranks:>5} {'x'.join(str(c) for c in cells):>9} "
               f"{1e3 * per_step:>9.1f} {outer / steps:>10.2f} {speed_up:>8.2f} "
               f"{efficiency:>10.2f} {100 * phases.get('pressure', 0) / stepping:>10.1f} "
               f"{100 * phases.get('momentum', 0) / stepping:>10.1f} {messages:>9.0f} "
-              f"{kib:>8.0f} {collectives:>9.0f}{note}")
+              f"{kib:>8.0f} {collectives:>9.0f} {comm:>6.1f} {share('momentum'):>14.1f} "
+              f"{share('coupling'):>16.1f}{note}")
     print("  speed-up: T(1 rank) / T(p) per step; efficiency: speed-up / p (strong), speed-up "
           "(weak, p times the cells). msgs, KiB, coll: rank 0's halo messages, their payload and "
-          "its collectives per step (hypre's own messages not counted).")
+          "its collectives per step; comm: rank 0's wall time inside fddem's own halo exchanges and "
+          "collectives, waiting included, of the whole step and of the momentum and coupling "
+          "phases (hypre's messages and time, i.e. the pressure solve's, are not counted).")
 
 
 def read_xy(path, skip_header=True):

@@ -16,6 +16,7 @@
 // The markers include points around the corner that four ranks share and next to the
 // periodic seam, and each layout is tried with every combination of periodic axes.
 
+#include "fddem/core/phase_timer.hpp"
 #include "fddem/coupling/delta_kernel.hpp"
 #include "fddem/coupling/transfer.hpp"
 #include "fddem/grid/halo_exchange.hpp"
@@ -197,6 +198,19 @@ TYPED_TEST(SplitGridTest, TrafficCountsEachHaloMessageAndCollective)
     EXPECT_EQ(after_sum.collective_bytes - after_fill.collective_bytes,
               comm.uses_mpi() ? 5 * static_cast<long>(sizeof(double)) : 0);
     EXPECT_DOUBLE_EQ(totals[0], world.size());
+    // The time inside those calls grows with them, and a phase that encloses the sum gets it.
+    EXPECT_GT(after_sum.seconds, after_fill.seconds);
+    EXPECT_GE(after_fill.seconds, before.seconds);
+    PhaseTimes times;
+    times.communication_clock = comm.seconds_counter();
+    {
+        const ScopedPhase pressure(times, Phase::pressure);
+        comm.sum(totals);
+    }
+    const double pressure = times.communication[static_cast<std::size_t>(Phase::pressure)];
+    EXPECT_DOUBLE_EQ(pressure, comm.traffic().seconds - after_sum.seconds);
+    EXPECT_LE(pressure, times[Phase::pressure]);
+    EXPECT_EQ(times.communication[static_cast<std::size_t>(Phase::momentum)], 0.0);
 }
 
 TYPED_TEST(SplitGridTest, FillGivesEveryEntryItsOneProcessValue)

@@ -2,7 +2,8 @@
 #pragma once
 /// Wall-clock seconds per phase of the time step, for summary.json: a ScopedPhase adds the time
 /// from its construction to its destruction to one phase (RAII, so an early return or a throw
-/// still counts).
+/// still counts), and the part of it spent in fddem's own MPI calls (halo exchanges and
+/// collectives, read from a running counter the Communicator keeps).
 
 #include <array>
 #include <chrono>
@@ -26,6 +27,11 @@ inline constexpr std::size_t n_phases = 4;
 /// Seconds spent so far in each phase.
 struct PhaseTimes {
     std::array<double, n_phases> seconds{};
+    /// Of those, the seconds inside fddem's MPI calls, waiting included (hypre's are not seen).
+    std::array<double, n_phases> communication{};
+    /// The running total of those calls' seconds (Communicator::seconds_counter()); none on one
+    /// process.
+    const double* communication_clock = nullptr;
 
     [[nodiscard]] double operator[](Phase phase) const noexcept
     {
@@ -41,18 +47,18 @@ struct PhaseTimes {
     }
 };
 
-class ScopedPhase {
+/// Adds the wall time from its construction to its destruction to `seconds`.
+class ScopedSeconds {
 public:
-    ScopedPhase(PhaseTimes& times, Phase phase) noexcept
-        : seconds_(times.seconds[static_cast<std::size_t>(phase)]),
-          start_(std::chrono::steady_clock::now())
+    explicit ScopedSeconds(double& seconds) noexcept
+        : seconds_(seconds), start_(std::chrono::steady_clock::now())
     {
     }
-    ScopedPhase(const ScopedPhase&) = delete;
-    ScopedPhase& operator=(const ScopedPhase&) = delete;
-    ScopedPhase(ScopedPhase&&) = delete;
-    ScopedPhase& operator=(ScopedPhase&&) = delete;
-    ~ScopedPhase()
+    ScopedSeconds(const ScopedSeconds&) = delete;
+    ScopedSeconds& operator=(const ScopedSeconds&) = delete;
+    ScopedSeconds(ScopedSeconds&&) = delete;
+    ScopedSeconds& operator=(ScopedSeconds&&) = delete;
+    ~ScopedSeconds()
     {
         seconds_ +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -61,6 +67,32 @@ public:
 private:
     double& seconds_;
     std::chrono::steady_clock::time_point start_;
+};
+
+class ScopedPhase {
+public:
+    ScopedPhase(PhaseTimes& times, Phase phase) noexcept
+        : communication_(times.communication[static_cast<std::size_t>(phase)]),
+          clock_(times.communication_clock), clock_start_(clock_ != nullptr ? *clock_ : 0.0),
+          wall_(times.seconds[static_cast<std::size_t>(phase)])
+    {
+    }
+    ScopedPhase(const ScopedPhase&) = delete;
+    ScopedPhase& operator=(const ScopedPhase&) = delete;
+    ScopedPhase(ScopedPhase&&) = delete;
+    ScopedPhase& operator=(ScopedPhase&&) = delete;
+    ~ScopedPhase()
+    {
+        if (clock_ != nullptr) {
+            communication_ += *clock_ - clock_start_;
+        }
+    }
+
+private:
+    double& communication_;
+    const double* clock_;
+    double clock_start_;
+    ScopedSeconds wall_; // the phase's wall time
 };
 
 } // namespace fddem

@@ -2,6 +2,7 @@
 #include "fddem/grid/communicator.hpp"
 
 #include "fddem/core/errors.hpp"
+#include "fddem/core/phase_timer.hpp"
 #include "fddem/grid/communicator_mpi.hpp"
 
 #include <mpi.h>
@@ -97,6 +98,11 @@ Traffic Communicator::traffic() const noexcept
     return mpi_ ? mpi_->sent : Traffic{};
 }
 
+const double* Communicator::seconds_counter() const noexcept
+{
+    return mpi_ ? &mpi_->sent.seconds : nullptr;
+}
+
 void Communicator::count_collective(std::size_t bytes) const noexcept
 {
     ++mpi_->sent.collectives;
@@ -109,6 +115,7 @@ double Communicator::max(double local) const
         return local;
     }
     // Gathered rather than MPI_MAX: a NaN must win (MPI_MAX's comparison would drop it).
+    const ScopedSeconds timer(mpi_->sent.seconds);
     count_collective(sizeof(double));
     std::vector<double> all(static_cast<std::size_t>(mpi_->size));
     check(MPI_Allgather(&local, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, mpi_->comm),
@@ -138,6 +145,7 @@ void Communicator::sum(std::span<double> values) const
     // Every rank's partial values, then added in rank order on every rank: the same bits on
     // each, and in each rerun (MPI_Allreduce leaves the order of additions open).
     const auto n = values.size();
+    const ScopedSeconds timer(mpi_->sent.seconds);
     count_collective(n * sizeof(double));
     std::vector<double> all(n * static_cast<std::size_t>(mpi_->size));
     check(MPI_Allgather(values.data(), static_cast<int>(n), MPI_DOUBLE, all.data(),
@@ -157,6 +165,7 @@ void Communicator::broadcast(std::string& bytes) const
     if (!mpi_) {
         return;
     }
+    const ScopedSeconds timer(mpi_->sent.seconds);
     auto size = static_cast<unsigned long long>(bytes.size());
     check(MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, mpi_->comm), "MPI_Bcast");
     count_collective(mpi_->rank == 0 ? static_cast<std::size_t>(size) : 0);
@@ -185,6 +194,7 @@ void Communicator::exchange(std::span<const double> send, int destination,
         }
         return;
     }
+    const ScopedSeconds timer(mpi_->sent.seconds);
     const int to = destination == no_rank ? MPI_PROC_NULL : destination;
     const int from = source == no_rank ? MPI_PROC_NULL : source;
     if (to != MPI_PROC_NULL) {

@@ -33,6 +33,7 @@ struct Traffic {
     long bytes = 0;            ///< their payload [B]
     long collectives = 0;      ///< reductions and broadcasts
     long collective_bytes = 0; ///< this rank's contribution to them [B]
+    double seconds = 0.0;      ///< wall time inside all of these calls, waiting included [s]
 };
 
 class Communicator {
@@ -74,6 +75,8 @@ public:
 
     /// This rank's traffic through this communicator so far (zero on self()).
     [[nodiscard]] Traffic traffic() const noexcept;
+    /// Traffic::seconds as it grows, for PhaseTimes::communication_clock; nullptr on self().
+    [[nodiscard]] const double* seconds_counter() const noexcept;
 
     /// The ranks laid out as a Cartesian grid of dims[0] × … processes (MPI_Cart_create, ranks
     /// in the same order), periodic where `is_periodic` says. The product of `dims` must be

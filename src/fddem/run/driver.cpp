@@ -236,9 +236,11 @@ void Driver<Dim>::write_checkpoint_now(std::size_t n_frames)
 template <int Dim>
 void Driver<Dim>::write_summary(const std::string& status) const
 {
+    // The mirror has rank 0's phase times but not its communication: those are sim_'s.
+    const RankCosts costs{ranks_.size(), sim_.grid().communicator().traffic(),
+                          sim_.phase_times().communication};
     write_run_summary(mirror_ ? *mirror_ : sim_, config_, record_, status,
-                      directory_ / "summary.json", ranks_.size(),
-                      sim_.grid().communicator().traffic());
+                      directory_ / "summary.json", costs);
 }
 
 template class Driver<2>;

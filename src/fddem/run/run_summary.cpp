@@ -56,7 +56,7 @@ void set_body_values(RunSummary& summary, const Simulation<Dim>& sim, const Case
 template <int Dim>
 void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
                        const RunRecord& record, const std::string& status,
-                       const std::filesystem::path& path, int ranks, const Traffic& traffic)
+                       const std::filesystem::path& path, const RankCosts& costs)
 {
     const StepReport& last = record.last;
     RunSummary summary;
@@ -79,12 +79,21 @@ void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
         summary.set("build_" + name, value);
     }
     set_phase_times(summary, sim, record.wall_seconds);
-    if (ranks > 1) {
-        summary.set("mpi_ranks", static_cast<long>(ranks));
+    if (costs.ranks > 1) {
+        const Traffic& traffic = costs.traffic;
+        summary.set("mpi_ranks", static_cast<long>(costs.ranks));
         summary.set("mpi_rank0_messages", traffic.messages);
         summary.set("mpi_rank0_message_bytes", traffic.bytes);
         summary.set("mpi_rank0_collectives", traffic.collectives);
         summary.set("mpi_rank0_collective_bytes", traffic.collective_bytes);
+        // Wall time in fddem's own halo exchanges and collectives (hypre's not seen), in all
+        // and by phase, since this process started (a restart begins them again).
+        summary.set("mpi_rank0_communication_seconds", traffic.seconds);
+        for (const Phase phase :
+             {Phase::momentum, Phase::pressure, Phase::coupling, Phase::contact}) {
+            summary.set(fmt::format("mpi_rank0_communication_seconds_{}", phase_name(phase)),
+                        costs.communication[static_cast<std::size_t>(phase)]);
+        }
     }
     if (!config.bodies.empty()) {
         set_body_values(summary, sim, config, record);
@@ -93,10 +102,8 @@ void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
 }
 
 template void write_run_summary(const Simulation<2>&, const CaseConfig&, const RunRecord&,
-                                const std::string&, const std::filesystem::path&, int,
-                                const Traffic&);
+                                const std::string&, const std::filesystem::path&, const RankCosts&);
 template void write_run_summary(const Simulation<3>&, const CaseConfig&, const RunRecord&,
-                                const std::string&, const std::filesystem::path&, int,
-                                const Traffic&);
+                                const std::string&, const std::filesystem::path&, const RankCosts&);
 
 } // namespace fddem

@@ -6,17 +6,24 @@
 #include "fddem/io/run_record.hpp"
 #include "fddem/simulation/simulation.hpp"
 
+#include <array>
 #include <filesystem>
 #include <string>
 
 namespace fddem {
 
+/// What a split run costs rank 0 in communication (summary.json's mpi_* keys).
+struct RankCosts {
+    int ranks = 1;
+    Traffic traffic;                              ///< its messages, collectives and their time
+    std::array<double, n_phases> communication{}; ///< that time by phase (PhaseTimes)
+};
+
 /// Writes `path` atomically; `status` is "completed", "failed: …" or "interrupted by …". On
-/// `ranks` > 1 processes it adds them and rank 0's `traffic` (its messages and collectives).
+/// more than one rank it adds rank 0's `costs`.
 template <int Dim>
 void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
                        const RunRecord& record, const std::string& status,
-                       const std::filesystem::path& path, int ranks = 1,
-                       const Traffic& traffic = {});
+                       const std::filesystem::path& path, const RankCosts& costs = {});
 
 } // namespace fddem

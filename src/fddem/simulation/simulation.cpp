@@ -33,6 +33,7 @@ Simulation<Dim>::Simulation(const CaseConfig& config, const Communicator& ranks)
                     config.time.is_steady ? 2.0 : 1.2}
 {
     clock_.dt = config.time.dt;
+    times_.communication_clock = grid_.communicator().seconds_counter();
     place_markers<Dim>(bodies_.all(), grid_, kernel_, 0, 0.0);
     set_uniform_body_force(vector_of<Dim>(config.fluid.body_force));
     fill_velocity_ghosts(grid_, bc_, state_.u);
