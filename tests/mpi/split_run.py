@@ -8,7 +8,8 @@ For a 2D cavity, a 3D channel (the fluid alone) and four colliding disks across 
 particles.csv to 1e-10 of each column's largest value, solver.csv step by step (the same steps, step sizes and outer
 iterations; the residuals, which sit near the tolerance, to 1e-8 relative), the line samples to
 1e-10 of their largest value, the same field frames; and checkpoints that continue on another
-number of processes (one process's on N, N processes' on one) as the one-process run continues.
+number of processes (one process's on N, N processes' on one, and for N > 2 two processes' on N)
+as the one-process run continues.
 Then the bad input of a split run: a body of negative diameter, a restart of a directory that does not
 exist and one from a damaged checkpoint, each end with exit status 2 and one message. The pressure is solved by hypre in both (auto would take the FFT solver on one
 process). Exit status 0 if all holds, 1 with the first difference otherwise.
@@ -119,6 +120,13 @@ def main():
         run([fddem, "run", "--restart", str(many)] + extend, 0)
         compare(one, crossed, f"{name}: one process, continued on {n}")
         compare(one, many, f"{name}: {n} processes, continued on one")
+        if int(n) > 2:
+            # A checkpoint written on 2 processes, continued on N (neither count is one).
+            two = work / f"{name}_two_then_split"
+            run(split[:4] + ["2"] + split[5:] + ["run", str(case), "-o", str(two), "--quiet"]
+                + COMMON, 0)
+            run(split + ["run", "--restart", str(two)] + extend, 0)
+            compare(one, two, f"{name}: 2 processes, continued on {n}")
     # Bad input on several processes: exit 2, said once, nothing written.
     if int(n) > 1:
         disk = work / "disk.toml"
