@@ -303,6 +303,8 @@ def read_pvtp(path):
                     f"{piece_path}: {name} has {held} components, {path} says {components}")
         parts.append(part)
     result = {name: np.concatenate([part[name] for part in parts]) for name in parts[0]}
+    if "id" not in result:
+        return result
     order = np.argsort(result["id"], kind="stable")
     if len(np.unique(result["id"])) != len(order):
         raise ValueError(f"{path}: a body is in more than one piece")
