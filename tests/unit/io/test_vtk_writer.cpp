@@ -13,6 +13,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <utility>
 
 namespace fddem {
 namespace {
@@ -95,6 +96,18 @@ void fill_by_index(const MacGrid<2>& grid, FaceField<2>& u, CellField<2>& p)
     });
 }
 
+/// The .vtr of `grid` with fill_by_index's fields (the cells the grid owns): its text, and the
+/// arrays write_vtr says it wrote.
+std::pair<std::string, std::vector<VtkArray>> filled_vtr(const MacGrid<2>& grid)
+{
+    FaceField<2> u(grid);
+    CellField<2> p(grid);
+    fill_by_index(grid, u, p);
+    const fs::path path = fs::temp_directory_path() / "fddem_test_piece.vtr";
+    std::vector<VtkArray> arrays = write_vtr(path, grid, u, p);
+    return {read_and_remove(path), std::move(arrays)};
+}
+
 /// The named Float64 arrays of a .vtr, in file order, with their components.
 std::vector<std::pair<std::string, std::string>> cell_data_arrays(const std::string& file)
 {
@@ -128,12 +141,7 @@ TEST(VtkWriter, BlockPiecesTileTheWholeGridWithItsValues)
     const Vec<2> origin(1.0, -1.0);
     const Vec<2> length(3.5, 1.5);
     const MacGrid<2> whole(cells, origin, length);
-    FaceField<2> u_whole(whole);
-    CellField<2> p_whole(whole);
-    fill_by_index(whole, u_whole, p_whole);
-    const fs::path whole_path = fs::temp_directory_path() / "fddem_test_whole.vtr";
-    const std::vector<VtkArray> whole_arrays = write_vtr(whole_path, whole, u_whole, p_whole);
-    const std::string whole_file = read_and_remove(whole_path);
+    const auto [whole_file, whole_arrays] = filled_vtr(whole);
     const std::vector<double> p_all = appended_array(whole_file, offset_of(whole_file, "p"));
     const std::vector<double> w_all =
         appended_array(whole_file, offset_of(whole_file, "vorticity"));
@@ -151,12 +159,7 @@ TEST(VtkWriter, BlockPiecesTileTheWholeGridWithItsValues)
             const auto [y_lo, y_hi] = block_range(cells[1], 2, j);
             partition.block = Box<2>{{x_lo, y_lo}, {x_hi, y_hi}};
             const MacGrid<2> block(cells, origin, length, {false, false}, partition);
-            FaceField<2> u(block);
-            CellField<2> p(block);
-            fill_by_index(block, u, p);
-            const fs::path path = fs::temp_directory_path() / "fddem_test_piece.vtr";
-            const std::vector<VtkArray> arrays = write_vtr(path, block, u, p);
-            const std::string file = read_and_remove(path);
+            const auto [file, arrays] = filled_vtr(block);
 
             const VtkExtent extent{x_lo, x_hi, y_lo, y_hi, 0, 0};
             EXPECT_NE(file.find("<RectilinearGrid WholeExtent=\"0 7 0 5 0 0\">"),
