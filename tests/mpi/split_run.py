@@ -23,6 +23,7 @@ import re
 import shutil
 import subprocess
 import sys
+import xml.etree.ElementTree as ElementTree
 
 import numpy as np
 
@@ -117,20 +118,24 @@ def listed_files(run, collection):
 def check_pieces(path, n_pieces):
     """A master file lists `n_pieces` pieces; a .pvtr's extents tile its whole extent (every cell
     of the grid in exactly one piece, neighbours sharing their node planes)."""
-    text = pathlib.Path(path).read_text()
-    pieces = re.findall(r'<Piece (?:Extent="([0-9 ]+)" )?Source="[^"]+"/>', text)
+    root = ElementTree.parse(path).getroot()
+    pieces = list(root.iter("Piece"))
     if len(pieces) != n_pieces:
         sys.exit(f"{path}: {len(pieces)} pieces on {n_pieces} processes")
-    if path.endswith(".pvtr"):
-        whole = [int(v) for v in re.search(r'WholeExtent="([0-9 ]+)"', text).group(1).split()]
-        cells = [max(whole[2 * d + 1] - whole[2 * d], 1) for d in range(3)]
-        covered = np.zeros(cells[::-1], dtype=int)
-        for extent in pieces:
-            e = [int(v) for v in extent.split()]
-            covered[tuple(slice(e[2 * d] - whole[2 * d], max(e[2 * d + 1], e[2 * d] + 1) -
-                                whole[2 * d]) for d in (2, 1, 0))] += 1
-        if np.any(covered != 1):
-            sys.exit(f"{path}: the pieces' extents do not tile the whole extent {whole}")
+    if not path.endswith(".pvtr"):
+        return
+    whole = [int(v) for v in root.find("PRectilinearGrid").get("WholeExtent").split()]
+    cells = [max(whole[2 * d + 1] - whole[2 * d], 1) for d in range(3)]
+    covered = np.zeros(cells[::-1], dtype=int)
+    for piece in pieces:
+        e = [int(v) for v in piece.get("Extent").split()]
+        if any(e[2 * d] < whole[2 * d] or e[2 * d + 1] > whole[2 * d + 1] or
+               e[2 * d] > e[2 * d + 1] for d in range(3)):
+            sys.exit(f"{path}: a piece's extent {e} is not inside the whole extent {whole}")
+        covered[tuple(slice(e[2 * d] - whole[2 * d], max(e[2 * d + 1], e[2 * d] + 1) -
+                            whole[2 * d]) for d in (2, 1, 0))] += 1
+    if np.any(covered != 1):
+        sys.exit(f"{path}: the pieces' extents do not tile the whole extent {whole}")
 
 
 def compare_frames(one, split, name, n_ranks, collection, read):
