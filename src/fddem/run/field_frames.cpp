@@ -115,9 +115,10 @@ void write_whole_frame(const Simulation<Dim>& sim, const fs::path& directory, Pv
     particles.add(sim.clock().time, file);
 }
 
-/// The pieces of a parallel master `folder`/`stem`.EXT written by `ranks`: each rank's file,
-/// `stem`/`stem`_RRRR.`piece_extension`, with (for a grid) the node extent each rank gives
-/// (`extent`). Collective: it is also what tells rank 0 that every piece is written.
+/// The pieces of the parallel master of frame `stem` (fields_000007), one per rank of `ranks`:
+/// each rank's file (piece_file) and, for a grid, the node extent it gives as `extent`.
+/// Collective, and called after each rank has written its piece: when it returns on rank 0,
+/// every piece is on disk, and the master that names them can be written.
 std::vector<VtkPiece> collect_pieces(const Communicator& ranks, const std::string& stem,
                                      const std::string& piece_extension, const VtkExtent& extent)
 {
