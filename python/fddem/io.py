@@ -188,8 +188,11 @@ def _appended_arrays(path):
 
 
 def read_vtr(path):
-    """An fddem field file (.vtr): dict with the node coordinates "x", "y", "z" and each cell
-    array by name, shaped (nz, ny, nx) or (nz, ny, nx, components); nz = 1 in 2D."""
+    """An fddem field file (.vtr), or a split run's frame in pieces (.pvtr, assembled by
+    read_pvtr): dict with the node coordinates "x", "y", "z" and each cell array by name, shaped
+    (nz, ny, nx) or (nz, ny, nx, components); nz = 1 in 2D."""
+    if path.endswith(".pvtr"):
+        return read_pvtr(path)
     arrays, _ = _appended_arrays(path)
     named = {name: (values, components) for name, values, components in arrays}
     x, y, z = (named.pop(k)[0] for k in ("x", "y", "z"))
@@ -200,17 +203,112 @@ def read_vtr(path):
     return result
 
 
+def _extent(text):
+    """A VTK extent "x0 x1 y0 y1 z0 z1" as ((x0, x1), (y0, y1), (z0, z1))."""
+    values = [int(v) for v in text.split()]
+    return tuple((values[2 * d], values[2 * d + 1]) for d in range(3))
+
+
+def _master_pieces(path, kind):
+    """The root element of a parallel master file of `kind` (PRectilinearGrid, PPolyData), its
+    arrays {name: components} and its pieces as (element, absolute path of the piece)."""
+    root = ElementTree.parse(path).getroot()
+    grid = root.find(kind)
+    if grid is None:
+        raise ValueError(f"{path}: not a {kind} file")
+    arrays = {}
+    for data in (grid.find("PCellData"), grid.find("PPointData")):
+        if data is not None:
+            for array in data.iter("PDataArray"):
+                arrays[array.get("Name")] = int(array.get("NumberOfComponents", "1"))
+    folder = os.path.dirname(path)
+    pieces = [(piece, os.path.join(folder, piece.get("Source"))) for piece in grid.iter("Piece")]
+    if not pieces:
+        raise ValueError(f"{path}: no pieces")
+    return grid, arrays, pieces
+
+
+def read_pvtr(path):
+    """A split run's field frame (.pvtr, one .vtr piece per rank) assembled into one frame, as
+    read_vtr returns it. The pieces' extents must tile the whole extent: every cell in exactly
+    one piece (ValueError otherwise)."""
+    grid, listed, pieces = _master_pieces(path, "PRectilinearGrid")
+    whole = _extent(grid.get("WholeExtent"))
+    n = [max(hi - lo, 1) for lo, hi in whole]  # cells along x, y, z (1 along z in 2D)
+    covered = np.zeros((n[2], n[1], n[0]), dtype=int)
+    nodes = [np.full(hi - lo + 1, np.nan) for lo, hi in whole]
+    result = {}
+    for piece, piece_path in pieces:
+        extent = _extent(piece.get("Extent"))
+        frame = read_vtr(piece_path)
+        starts = [extent[d][0] - whole[d][0] for d in range(3)]
+        cells = tuple(
+            slice(starts[d], starts[d] + max(extent[d][1] - extent[d][0], 1)) for d in (2, 1, 0)
+        )
+        for d, axis in enumerate("xyz"):
+            if len(frame[axis]) != extent[d][1] - extent[d][0] + 1:
+                raise ValueError(
+                    f"{piece_path}: {len(frame[axis])} {axis} nodes for the extent {extent[d]}"
+                )
+            nodes[d][starts[d] : starts[d] + len(frame[axis])] = frame[axis]
+        covered[cells] += 1
+        for name in listed:
+            if name not in frame:
+                raise ValueError(f"{piece_path}: no array {name}, which {path} lists")
+            values = frame[name]
+            components = values.shape[3] if values.ndim == 4 else 1
+            if components != listed[name]:
+                raise ValueError(
+                    f"{piece_path}: {name} has {components} components, {path} says {listed[name]}")
+            if name not in result:
+                result[name] = np.full(tuple(covered.shape) + values.shape[3:], np.nan)
+            result[name][cells] = values
+    if np.any(covered != 1):
+        raise ValueError(f"{path}: the pieces cover {int(np.sum(covered == 0))} cells not at all "
+                         f"and {int(np.sum(covered > 1))} more than once")
+    result.update({"x": nodes[0], "y": nodes[1], "z": nodes[2]})
+    return result
+
+
 def read_vtp(path):
-    """An fddem particle file (.vtp): dict with "centre" (n, 3), "radius" (n), "velocity" (n, 3)
-    and "angular_velocity" (n, 3), in body order."""
+    """An fddem particle file (.vtp), or a split run's frame in pieces (.pvtp, assembled by
+    read_pvtp): dict with "centre" (n, 3) and each point array by name ("id", "radius" (n),
+    "velocity" (n, 3), "angular_velocity" (n, 3), "orientation" (n, 4), the forces, …), in body
+    order."""
+    if path.endswith(".pvtp"):
+        return read_pvtp(path)
     arrays, _ = _appended_arrays(path)
     result = {}
     for name, values, components in arrays:
         if name is None:  # the Points array has no name
             result["centre"] = values.reshape(-1, 3)
-        elif name in ("radius", "velocity", "angular_velocity"):
+        elif name not in ("connectivity", "offsets"):
             result[name] = values.reshape(-1, components) if components > 1 else values
     return result
+
+
+def read_pvtp(path):
+    """A split run's particle frame (.pvtp, one .vtp piece per rank: the bodies whose centre
+    lies in its block) assembled into one, as read_vtp returns it, in id order."""
+    _, listed, pieces = _master_pieces(path, "PPolyData")
+    parts = []
+    for _, piece_path in pieces:
+        part = read_vtp(piece_path)
+        for name, components in listed.items():
+            if name not in part:
+                raise ValueError(f"{piece_path}: no array {name}, which {path} lists")
+            held = part[name].shape[1] if part[name].ndim == 2 else 1
+            if held != components:
+                raise ValueError(
+                    f"{piece_path}: {name} has {held} components, {path} says {components}")
+        parts.append(part)
+    result = {name: np.concatenate([part[name] for part in parts]) for name in parts[0]}
+    if "id" not in result:
+        return result
+    order = np.argsort(result["id"], kind="stable")
+    if len(np.unique(result["id"])) != len(order):
+        raise ValueError(f"{path}: a body is in more than one piece")
+    return {name: values[order] for name, values in result.items()}
 
 
 def frame_times(run_dir):

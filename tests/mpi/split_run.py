@@ -7,7 +7,10 @@ For a 2D cavity, a 3D channel (the fluid alone) and four colliding disks across 
 (tests/mpi/cases), the run on N processes must write what the one-process run writes:
 particles.csv to 1e-10 of each column's largest value, solver.csv step by step (the same steps, step sizes and outer
 iterations; the residuals, which sit near the tolerance, to 1e-8 relative), the line samples to
-1e-10 of their largest value, the same field frames; and checkpoints that continue on another
+1e-10 of their largest value, the same field and particle frames (on N > 1 processes written in
+pieces, one per rank, whose extents tile the grid: assembled by the fddem Python readers, each
+array to 1e-10 of its largest value), with no frame files left over that the .pvd collections do
+not list (a restart removes the later frames and their pieces); and checkpoints that continue on another
 number of processes (one process's on N, N processes' on one, and for N > 2 two processes' on N)
 as the one-process run continues.
 Then the bad input of a split run: a body of negative diameter, a restart of a directory that does not
@@ -17,11 +20,16 @@ process). Exit status 0 if all holds, 1 with the first difference otherwise.
 
 import csv
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
+import xml.etree.ElementTree as ElementTree
 
 import numpy as np
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "python"))
+from fddem import io as frames_io  # noqa: E402
 
 COMMON = ["--set", "simple.pressure_solver=hypre", "--set", "simple.linear_tolerance=1e-13",
           "--set", "simple.linear_max_iterations=2000"]
@@ -54,7 +62,7 @@ def run(command, expect):
     return result
 
 
-def compare(one, split, name):
+def compare(one, split, name, n_ranks):
     head, a = table(one / "solver.csv")
     head_split, b = table(split / "solver.csv")
     if head != head_split or a.shape != b.shape:
@@ -90,11 +98,85 @@ def compare(one, split, name):
               f"{worst:.2e} ({column})")
         if worst > 1e-10:
             sys.exit(f"{name}: particles.csv column {column} differs by {worst:.2e} (relative)")
-    frames = sorted(p.name for p in (one / "fields").glob("*.vtr"))
-    if frames != sorted(p.name for p in (split / "fields").glob("*.vtr")) or len(frames) < 2:
-        sys.exit(f"{name}: field frames {frames} against the split run's")
-    if (one / "fields.pvd").read_text() != (split / "fields.pvd").read_text():
-        sys.exit(f"{name}: fields.pvd differs")
+    compare_frames(one, split, name, n_ranks, "fields.pvd", frames_io.read_vtr)
+    if (one / "particles.pvd").exists():
+        compare_frames(one, split, name, n_ranks, "particles.pvd", frames_io.read_vtp)
+
+
+def listed_files(run, collection):
+    """The files a .pvd lists, and for a master file (.pvtr, .pvtp) its pieces: relative paths."""
+    files = set()
+    for _, path in frames_io.read_pvd(run, collection):
+        files.add(str(pathlib.Path(path).relative_to(run)))
+        if path.endswith((".pvtr", ".pvtp")):
+            text = pathlib.Path(path).read_text()
+            folder = pathlib.Path(path).parent.relative_to(run)
+            for source in re.findall(r'Source="([^"]+)"', text):
+                files.add(str(folder / source))
+    return files
+
+
+def check_pieces(path, n_pieces):
+    """A master file lists `n_pieces` pieces; a .pvtr's extents tile its whole extent (every cell
+    of the grid in exactly one piece, neighbours sharing their node planes)."""
+    root = ElementTree.parse(path).getroot()
+    pieces = list(root.iter("Piece"))
+    allowed = (n_pieces,) if isinstance(n_pieces, int) else tuple(n_pieces)
+    if len(pieces) not in allowed:
+        sys.exit(f"{path}: {len(pieces)} pieces on {n_pieces} processes")
+    if not path.endswith(".pvtr"):
+        return
+    whole = [int(v) for v in root.find("PRectilinearGrid").get("WholeExtent").split()]
+    cells = [max(whole[2 * d + 1] - whole[2 * d], 1) for d in range(3)]
+    covered = np.zeros(cells[::-1], dtype=int)
+    for piece in pieces:
+        e = [int(v) for v in piece.get("Extent").split()]
+        if any(e[2 * d] < whole[2 * d] or e[2 * d + 1] > whole[2 * d + 1] or
+               e[2 * d] > e[2 * d + 1] for d in range(3)):
+            sys.exit(f"{path}: a piece's extent {e} is not inside the whole extent {whole}")
+        covered[tuple(slice(e[2 * d] - whole[2 * d], max(e[2 * d + 1], e[2 * d] + 1) -
+                            whole[2 * d]) for d in (2, 1, 0))] += 1
+    if np.any(covered != 1):
+        sys.exit(f"{path}: the pieces' extents do not tile the whole extent {whole}")
+
+
+def compare_frames(one, split, name, n_ranks, collection, read):
+    """The frames `collection` lists in `split` (in `n_ranks` pieces where written on several
+    processes) against the one-process run's, array by array; no frame file left that it does not list."""
+    a_frames = frames_io.read_pvd(one, collection)
+    b_frames = frames_io.read_pvd(split, collection)
+    if [t for t, _ in a_frames] != [t for t, _ in b_frames] or len(a_frames) < 2:
+        sys.exit(f"{name}: {collection} lists frames at {[t for t, _ in b_frames]}, "
+                 f"the one-process run at {[t for t, _ in a_frames]}")
+    folder = "fields" if collection == "fields.pvd" else "particles"
+    on_disk = {str(p.relative_to(split)) for p in (split / folder).rglob("*") if p.is_file()}
+    if on_disk != listed_files(split, collection):
+        sys.exit(f"{name}: {folder}/ holds {sorted(on_disk - listed_files(split, collection))} "
+                 f"that {collection} does not list, and lacks "
+                 f"{sorted(listed_files(split, collection) - on_disk)}")
+    worst, where = 0.0, ""
+    for (_, a_path), (_, b_path) in zip(a_frames, b_frames):
+        if b_path.endswith((".pvtr", ".pvtp")):
+            check_pieces(b_path, int(n_ranks) if isinstance(n_ranks, str) else n_ranks)
+        a, b = read(a_path), read(b_path)
+        if sorted(a) != sorted(b):
+            sys.exit(f"{name}: {b_path} holds {sorted(b)}, {a_path} {sorted(a)}")
+        if "id" in a:  # bodies: in id order in both
+            order = np.argsort(a["id"], kind="stable")
+            a = {key: values[order] for key, values in a.items()}
+        # Each array against its largest value; an array of round-off alone (the contact torque
+        # of disks touching head-on) against 1e-6 of the frame's largest value.
+        floor = 1e-6 * max(np.abs(values).max() for values in a.values())
+        for key in a:
+            if a[key].shape != b[key].shape:
+                sys.exit(f"{name}: {b_path}: {key} is {b[key].shape}, one process {a[key].shape}")
+            difference = np.abs(a[key] - b[key]).max() / max(np.abs(a[key]).max(), floor)
+            if difference > worst:
+                worst, where = difference, f"{pathlib.Path(b_path).name} {key}"
+    print(f"{name}: {collection} ({len(a_frames)} frames): largest relative difference "
+          f"{worst:.2e} ({where})")
+    if worst > 1e-10:
+        sys.exit(f"{name}: {where} differs by {worst:.2e} (relative)")
 
 
 def main():
@@ -109,7 +191,7 @@ def main():
         one, many = work / f"{name}_one", work / f"{name}_split"
         run([fddem, "run", str(case), "-o", str(one), "--quiet"] + COMMON, 0)
         run(split + ["run", str(case), "-o", str(many), "--quiet"] + COMMON, 0)
-        compare(one, many, f"{name} on {n} processes")
+        compare(one, many, f"{name} on {n} processes", n)
         # Checkpoints across process counts: the one-process run continued on N processes and
         # the N-process run continued on one must both continue as the one-process run does.
         crossed = work / f"{name}_one_then_split"
@@ -118,15 +200,16 @@ def main():
         run([fddem, "run", "--restart", str(one)] + extend, 0)
         run(split + ["run", "--restart", str(crossed)] + extend, 0)
         run([fddem, "run", "--restart", str(many)] + extend, 0)
-        compare(one, crossed, f"{name}: one process, continued on {n}")
-        compare(one, many, f"{name}: {n} processes, continued on one")
+        compare(one, crossed, f"{name}: one process, continued on {n}", n)
+        compare(one, many, f"{name}: {n} processes, continued on one", n)
         if int(n) > 2:
-            # A checkpoint written on 2 processes, continued on N (neither count is one).
+            # A checkpoint written on 2 processes, continued on N (neither count is one): its
+            # frames are in 2 pieces up to the restart and in N after it.
             two = work / f"{name}_two_then_split"
             run(split[:4] + ["2"] + split[5:] + ["run", str(case), "-o", str(two), "--quiet"]
                 + COMMON, 0)
             run(split + ["run", "--restart", str(two)] + extend, 0)
-            compare(one, two, f"{name}: 2 processes, continued on {n}")
+            compare(one, two, f"{name}: 2 processes, continued on {n}", (2, int(n)))
     # Bad input on several processes: exit 2, said once, nothing written.
     if int(n) > 1:
         disk = work / "disk.toml"

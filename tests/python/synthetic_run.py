@@ -44,17 +44,21 @@ def write_vtr(path, x, y, z, cell_arrays):
         f.write("\n".join(lines).encode() + blob + b"\n  </AppendedData>\n</VTKFile>\n")
 
 
-def write_vtp(path, centres, radii, velocities):
+def write_vtp(path, centres, radii, velocities, ids=None):
+    """Bodies at `centres`; with `ids`, an "id" array as well (fddem writes one)."""
     n = len(radii)
     blob, offsets = _appended([np.asarray(centres, "<f8").ravel(), np.asarray(radii, "<f8"),
                                np.asarray(velocities, "<f8").ravel(), np.zeros(3 * n),
-                               np.arange(n, dtype="<i8"), np.arange(1, n + 1, dtype="<i8")])
+                               np.arange(n, dtype="<i8"), np.arange(1, n + 1, dtype="<i8"),
+                               np.asarray(ids if ids is not None else [], "<f8")])
+    id_array = (f'        <DataArray type="Float64" Name="id" format="appended" '
+                f'offset="{offsets[6]}"/>\n' if ids is not None else "")
     text = f"""<?xml version="1.0"?>
 <VTKFile type="PolyData" version="1.0" byte_order="LittleEndian" header_type="UInt64">
   <PolyData>
     <Piece NumberOfPoints="{n}" NumberOfVerts="{n}" NumberOfLines="0" NumberOfStrips="0" NumberOfPolys="0">
       <PointData Scalars="radius" Vectors="velocity">
-        <DataArray type="Float64" Name="radius" format="appended" offset="{offsets[1]}"/>
+{id_array}        <DataArray type="Float64" Name="radius" format="appended" offset="{offsets[1]}"/>
         <DataArray type="Float64" Name="velocity" NumberOfComponents="3" format="appended" offset="{offsets[2]}"/>
         <DataArray type="Float64" Name="angular_velocity" NumberOfComponents="3" format="appended" offset="{offsets[3]}"/>
       </PointData>
@@ -71,6 +75,72 @@ def write_vtp(path, centres, radii, velocities):
    _"""
     with open(path, "wb") as f:
         f.write(text.encode() + blob + b"\n  </AppendedData>\n</VTKFile>\n")
+
+
+def write_split_frame(folder, stem, nodes, cell_arrays, cuts):
+    """A field frame in pieces as a split run writes it (docs/output-files.md): folder/stem.pvtr
+    listing folder/stem/stem_RRRR.vtr. `cuts` gives per axis the cell indices where the blocks
+    meet ([] for an axis not split); the pieces are the blocks, x fastest."""
+    n_cells = [max(len(c) - 1, 1) for c in nodes]
+    bounds = [[0] + list(cuts[d]) + [n_cells[d]] for d in range(3)]
+    os.makedirs(os.path.join(folder, stem), exist_ok=True)
+    pieces = []
+    for k in range(len(bounds[2]) - 1):
+        for j in range(len(bounds[1]) - 1):
+            for i in range(len(bounds[0]) - 1):
+                lo = [bounds[0][i], bounds[1][j], bounds[2][k]]
+                hi = [bounds[0][i + 1], bounds[1][j + 1], bounds[2][k + 1]]
+                if len(nodes[2]) == 1:  # 2D: one node along z, extent 0 0
+                    hi[2] = 0
+                cells = (slice(lo[2], max(hi[2], 1)), slice(lo[1], hi[1]), slice(lo[0], hi[0]))
+                source = f"{stem}/{stem}_{len(pieces):04d}.vtr"
+                write_vtr(os.path.join(folder, source),
+                          *[nodes[d][lo[d]:hi[d] + 1] for d in range(3)],
+                          {name: values[cells] for name, values in cell_arrays.items()})
+                extent = " ".join(f"{lo[d]} {hi[d]}" for d in range(3))
+                pieces.append(f'    <Piece Extent="{extent}" Source="{source}"/>')
+    write_pvtr(os.path.join(folder, stem + ".pvtr"), nodes, cell_arrays, pieces)
+
+
+def write_pvtr(path, nodes, cell_arrays, pieces):
+    """The master of a field frame in `pieces` (their <Piece> lines)."""
+    whole = " ".join(f"0 {len(c) - 1}" for c in nodes)
+    arrays = "".join(
+        f'      <PDataArray type="Float64" Name="{name}"'
+        + (' NumberOfComponents="3"' if values.ndim == 4 else "") + "/>\n"
+        for name, values in cell_arrays.items())
+    coordinates = "".join(f'      <PDataArray type="Float64" Name="{a}"/>\n' for a in "xyz")
+    with open(path, "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="PRectilinearGrid" version="1.0" '
+                'byte_order="LittleEndian" header_type="UInt64">\n'
+                f'  <PRectilinearGrid WholeExtent="{whole}" GhostLevel="0">\n'
+                f"    <PCellData>\n{arrays}    </PCellData>\n"
+                f"    <PCoordinates>\n{coordinates}    </PCoordinates>\n"
+                + "\n".join(pieces) + "\n  </PRectilinearGrid>\n</VTKFile>\n")
+
+
+def write_split_bodies(folder, stem, pieces):
+    """A particle frame in pieces: folder/stem.pvtp listing folder/stem/stem_RRRR.vtp, one per
+    entry of `pieces` (each a dict of "id", "centre", "radius", "velocity" lists)."""
+    os.makedirs(os.path.join(folder, stem), exist_ok=True)
+    lines = []
+    for rank, piece in enumerate(pieces):
+        source = f"{stem}/{stem}_{rank:04d}.vtp"
+        write_vtp(os.path.join(folder, source), piece["centre"], piece["radius"],
+                  piece["velocity"], piece["id"])
+        lines.append(f'    <Piece Source="{source}"/>')
+    arrays = "".join(
+        f'      <PDataArray type="Float64" Name="{name}"{components}/>\n'
+        for name, components in (("id", ""), ("radius", ""),
+                                 ("velocity", ' NumberOfComponents="3"'),
+                                 ("angular_velocity", ' NumberOfComponents="3"')))
+    with open(os.path.join(folder, stem + ".pvtp"), "w") as f:
+        f.write('<?xml version="1.0"?>\n<VTKFile type="PPolyData" version="1.0" '
+                'byte_order="LittleEndian" header_type="UInt64">\n'
+                '  <PPolyData GhostLevel="0">\n'
+                f"    <PPointData>\n{arrays}    </PPointData>\n"
+                '    <PPoints>\n      <PDataArray type="Float64" NumberOfComponents="3"/>\n'
+                "    </PPoints>\n" + "\n".join(lines) + "\n  </PPolyData>\n</VTKFile>\n")
 
 
 def write_pvd(path, entries):

@@ -24,7 +24,8 @@ sys.path.insert(0, HERE)
 import fddem  # noqa: E402
 from fddem import heavy_disk, impulsive_cylinder, io, rebound, shedding, slices  # noqa: E402
 from fddem import sphere_wake, sphere_wall, ten_cate  # noqa: E402
-from synthetic_run import make_run, velocity_field  # noqa: E402
+from synthetic_run import make_run, velocity_field, write_pvd  # noqa: E402
+from synthetic_run import write_split_bodies, write_split_frame  # noqa: E402
 
 # A figure with a picture in it: pixel values vary. A blank (one-colour) PNG has variance 0;
 # an axes frame with labels only is far below this.
@@ -89,6 +90,67 @@ class Readers(unittest.TestCase):
         bodies = run.bodies_at_frame(-1)
         np.testing.assert_allclose(bodies["radius"], [0.1, 0.1])
         np.testing.assert_allclose(bodies["centre"][:, 1], [0.5, 0.5])
+
+    def split_frame(self, dimension, cuts):
+        """A field frame written whole and in pieces at the block faces `cuts`: both read."""
+        folder = tempfile.mkdtemp(dir=self.tmp.name)
+        nodes = [np.linspace(0.0, 1.0, 9), np.linspace(-1.0, 0.5, 7),
+                 np.linspace(0.0, 2.0, 6) if dimension == 3 else np.zeros(1)]
+        velocity = velocity_field(*nodes, 0.3)
+        arrays = {"velocity": velocity, "p": velocity[..., 0] + 2.0 * velocity[..., 1]}
+        write_split_frame(folder, "fields_000004", nodes, arrays, cuts)
+        return os.path.join(folder, "fields_000004.pvtr"), nodes, arrays
+
+    def test_split_field_frames_assemble_to_the_whole_grid(self):
+        # 2D on four blocks (the corner they share at cell (3, 2)), 3D on 2 × 1 × 3 blocks:
+        # every cell value back where the one-process file has it, the nodes shared once.
+        for dimension, cuts in ((2, [[3], [2], []]), (3, [[5], [], [1, 4]])):
+            path, nodes, arrays = self.split_frame(dimension, cuts)
+            frame = io.read_vtr(path)
+            for axis, expected in zip("xyz", nodes):
+                np.testing.assert_array_equal(frame[axis], expected)
+            for name, values in arrays.items():
+                self.assertEqual(frame[name].shape, values.shape)
+                np.testing.assert_array_equal(frame[name], values)
+
+    def test_pieces_that_do_not_tile_the_grid_are_refused(self):
+        path, _, _ = self.split_frame(2, [[3], [], []])
+        with open(path) as f:
+            text = f.read()
+        # The second block starting one cell early: cells 2 of x in both pieces.
+        with open(path, "w") as f:
+            f.write(text.replace('Extent="3 8 0 6 0 0"', 'Extent="2 7 0 6 0 0"'))
+        with self.assertRaisesRegex(ValueError, "more than once"):
+            io.read_vtr(path)
+
+    def test_a_split_run_reads_as_one(self):
+        # A run whose .pvd collections list a split run's masters: Run.field and
+        # Run.bodies_at_frame read them whole, the bodies in id order whichever piece holds them.
+        run_dir = make_run(os.path.join(self.tmp.name, "split"), dimension=2, n_frames=1)
+        whole = io.read_vtr(os.path.join(run_dir, "fields", "fields_000000.vtr"))
+        nodes = [whole["x"], whole["y"], whole["z"]]
+        arrays = {k: v for k, v in whole.items() if k not in "xyz"}
+        write_split_frame(os.path.join(run_dir, "fields"), "fields_000001", nodes, arrays,
+                          [[8], [5], []])
+        write_pvd(os.path.join(run_dir, "fields.pvd"),
+                  [(0.0, "fields/fields_000000.vtr"), (0.1, "fields/fields_000001.pvtr")])
+        pieces = [{"id": [], "centre": [], "radius": [], "velocity": []},
+                  {"id": [7, 2], "centre": [[0.75, 0.6, 0.0], [0.25, 0.6, 0.0]],
+                   "radius": [0.2, 0.1], "velocity": [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0]]}]
+        write_split_bodies(os.path.join(run_dir, "particles"), "particles_000001", pieces)
+        write_pvd(os.path.join(run_dir, "particles.pvd"),
+                  [(0.0, "particles/particles_000000.vtp"),
+                   (0.1, "particles/particles_000001.pvtp")])
+        run = fddem.Run(run_dir)
+        frame = run.field(-1)
+        self.assertEqual(frame["time"], 0.1)
+        for name, values in arrays.items():
+            np.testing.assert_array_equal(frame[name], values)
+        bodies = run.bodies_at_frame(-1)
+        np.testing.assert_array_equal(bodies["id"], [2, 7])
+        np.testing.assert_array_equal(bodies["radius"], [0.1, 0.2])
+        np.testing.assert_array_equal(bodies["centre"][:, 0], [0.25, 0.75])
+        np.testing.assert_array_equal(bodies["velocity"][:, 0], [1.0, 0.0])
 
     def test_case_title_source_and_units(self):
         run = fddem.Run(self.run2)

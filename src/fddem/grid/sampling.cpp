@@ -87,7 +87,7 @@ void cell_centred_velocity(const MacGrid<Dim>& grid, const FaceField<Dim>& u, in
                            CellField<Dim>& out)
 {
     const std::ptrdiff_t s = grid.stride(axis);
-    for_each_index(grid.cell_box(), [&](const Index<Dim>& c) {
+    for_each_index(grid.owned_cells(), [&](const Index<Dim>& c) {
         const std::ptrdiff_t o = grid.offset(c);
         out[o] = 0.5 * (u[axis][o] + u[axis][o + s]);
     });
@@ -105,7 +105,7 @@ void cell_centred_vorticity(const MacGrid<Dim>& grid, const FaceField<Dim>& u, i
     const auto edge = [&](std::ptrdiff_t o) {
         return (u[b][o] - u[b][o - sa]) / ha - (u[a][o] - u[a][o - sb]) / hb;
     };
-    for_each_index(grid.cell_box(), [&](const Index<Dim>& c) {
+    for_each_index(grid.owned_cells(), [&](const Index<Dim>& c) {
         const std::ptrdiff_t o = grid.offset(c);
         out[o] = 0.25 * (edge(o) + edge(o + sa) + edge(o + sb) + edge(o + sa + sb));
     });

@@ -26,13 +26,15 @@ template <int Dim>
 sample_line(const MacGrid<Dim>& grid, const FaceField<Dim>& u, const CellField<Dim>& p,
             const Vec<Dim>& from, const Vec<Dim>& to, int n_points);
 
-/// Velocity component `axis` at cell centres: the mean of the cell's two faces.
+/// Velocity component `axis` at cell centres: the mean of the cell's two faces, on the cells
+/// this process owns (the ghosts of u read across a rank face must be filled).
 template <int Dim>
 void cell_centred_velocity(const MacGrid<Dim>& grid, const FaceField<Dim>& u, int axis,
                            CellField<Dim>& out);
 
 /// Vorticity component ω_c = ∂u_b/∂x_a − ∂u_a/∂x_b at cell centres, (a, b, c) cyclic
-/// (in 2D only c = z: a = 0, b = 1): the mean of the four cell edges it is defined on.
+/// (in 2D only c = z: a = 0, b = 1): the mean of the four cell edges it is defined on, on the
+/// cells this process owns (reads the ghosts of u next to them, edges and corners included).
 template <int Dim>
 void cell_centred_vorticity(const MacGrid<Dim>& grid, const FaceField<Dim>& u, int a, int b,
                             CellField<Dim>& out);

@@ -22,8 +22,17 @@ constexpr std::array<const char*, 4> run_folders{"fields", "particles", "samples
 /// The file that proves a directory writable (created and removed at once).
 constexpr const char* write_probe = ".fddem-write-test";
 
-/// The files of `directory` and of its run folders, as paths relative to it ("" folder: the
-/// directory itself).
+/// The folders of a split run's frame pieces: fields/fields_NNNNNN/ and particles/particles_NNNNNN/
+/// (run/field_frames.hpp).
+bool is_piece_folder(const std::string& folder, const std::string& name)
+{
+    static const std::regex frame("[0-9]+");
+    return name.starts_with(folder + "_") &&
+           std::regex_match(name.substr(folder.size() + 1), frame);
+}
+
+/// The files of `directory`, of its run folders and of their frames' piece folders, as paths
+/// relative to it ("" folder: the directory itself).
 std::vector<std::string> files_of_run_directory(const fs::path& directory)
 {
     std::vector<std::string> files;
@@ -37,11 +46,35 @@ std::vector<std::string> files_of_run_directory(const fs::path& directory)
     };
     add(directory, "");
     for (const char* folder : run_folders) {
-        if (fs::is_directory(directory / folder, error)) {
-            add(directory / folder, std::string(folder) + "/");
+        if (!fs::is_directory(directory / folder, error)) {
+            continue;
+        }
+        add(directory / folder, std::string(folder) + "/");
+        for (const auto& entry : fs::directory_iterator(directory / folder, error)) {
+            const std::string name = entry.path().filename().string();
+            if (entry.is_directory(error) && is_piece_folder(folder, name)) {
+                add(entry.path(), std::string(folder) + "/" + name + "/");
+            }
         }
     }
     return files;
+}
+
+/// Removes the piece folders of `directory`/`folder` that are empty (their files removed).
+void remove_empty_piece_folders(const fs::path& directory, const std::string& folder)
+{
+    std::error_code error;
+    std::vector<fs::path> empty;
+    for (const auto& entry : fs::directory_iterator(directory / folder, error)) {
+        if (entry.is_directory(error) &&
+            is_piece_folder(folder, entry.path().filename().string()) &&
+            fs::is_empty(entry.path(), error)) {
+            empty.push_back(entry.path());
+        }
+    }
+    for (const fs::path& path : empty) {
+        fs::remove(path, error);
+    }
 }
 
 /// A temporary of an output (`case.toml.tmp.PID`), left by a process killed while it wrote.
@@ -84,7 +117,9 @@ bool is_run_output(const std::string& relative)
 {
     static const std::regex outputs(
         R"((case\.toml|solver\.csv|particles\.csv|summary\.json|fields\.pvd|particles\.pvd|)"
-        R"(fields/fields_[0-9]+\.vtr|particles/particles_[0-9]+\.vtp|samples/[^/]+\.csv|)"
+        R"(fields/fields_[0-9]+\.p?vtr|particles/particles_[0-9]+\.p?vtp|)"
+        R"(fields/fields_[0-9]+/fields_[0-9]+_[0-9]+\.vtr|)"
+        R"(particles/particles_[0-9]+/particles_[0-9]+_[0-9]+\.vtp|samples/[^/]+\.csv|)"
         R"(checkpoints/checkpoint_[0-9]+\.ckpt(\.damaged)?|\.fddem-write-test)(\.tmp\.[0-9]+)?)");
     return std::regex_match(relative, outputs);
 }
@@ -137,7 +172,11 @@ int remove_run_files(const fs::path& directory, const Predicate& is_removed)
 
 int remove_run_outputs(const fs::path& directory)
 {
-    return remove_run_files(directory, is_run_output);
+    const int removed = remove_run_files(directory, is_run_output);
+    for (const char* folder : {"fields", "particles"}) {
+        remove_empty_piece_folders(directory, folder);
+    }
+    return removed;
 }
 
 void prepare_run_directory(const fs::path& directory, bool force)
@@ -171,25 +210,40 @@ void check_run_directory_writable(const fs::path& directory)
 }
 
 int remove_unlisted_files(const fs::path& directory, const std::string& folder,
-                          const std::string& extension,
+                          const std::vector<std::string>& extensions,
                           const std::vector<std::pair<double, std::string>>& listed)
 {
     std::error_code error;
     if (!fs::is_directory(directory / folder, error)) {
         return 0;
     }
+    const auto is_listed = [&](const std::string& relative) {
+        return std::any_of(listed.begin(), listed.end(),
+                           [&](const auto& entry) { return entry.second == relative; });
+    };
     std::vector<fs::path> unlisted;
     for (const auto& file : fs::directory_iterator(directory / folder, error)) {
-        const std::string relative = folder + "/" + file.path().filename().string();
-        const bool is_listed = std::any_of(listed.begin(), listed.end(), [&](const auto& entry) {
-            return entry.second == relative;
-        });
-        if (relative.ends_with(extension) && !is_listed) {
+        const std::string name = file.path().filename().string();
+        const std::string relative = folder + "/" + name;
+        if (file.is_directory(error)) {
+            // A split run's piece folder (fields/fields_NNNNNN/): unlisted with its master.
+            const bool has_listed_master = std::any_of(
+                extensions.begin(), extensions.end(),
+                [&](const std::string& extension) { return is_listed(relative + extension); });
+            if (is_piece_folder(folder, name) && !has_listed_master) {
+                unlisted.push_back(file.path());
+            }
+            continue;
+        }
+        const bool is_frame =
+            std::any_of(extensions.begin(), extensions.end(),
+                        [&](const std::string& extension) { return name.ends_with(extension); });
+        if (is_frame && !is_listed(relative)) {
             unlisted.push_back(file.path());
         }
     }
     for (const fs::path& path : unlisted) {
-        fs::remove(path, error);
+        fs::remove_all(path, error);
         if (error) {
             throw OutputError("cannot remove " + path.string() + ": " + error.message());
         }

@@ -11,8 +11,9 @@
 namespace fddem {
 
 /// Whether `relative` (a path relative to a run directory) names a file fddem writes there:
-/// case.toml, the histories, summary.json, the .pvd collections and their frames, the line
-/// samples, the checkpoints (and their `*.damaged`), and a temporary of any of them.
+/// case.toml, the histories, summary.json, the .pvd collections and their frames (a split
+/// run's master files and their pieces too), the line samples, the checkpoints (and their
+/// `*.damaged`), and a temporary of any of them.
 [[nodiscard]] bool is_run_output(const std::string& relative);
 
 /// Before any work, writing nothing: throws InputError if `directory` exists and is not a
@@ -31,11 +32,13 @@ void prepare_run_directory(const std::filesystem::path& directory, bool force);
 /// A restart's directory: throws InputError unless it and its run folders are writable.
 void check_run_directory_writable(const std::filesystem::path& directory);
 
-/// Removes the files of `directory`/`folder` whose names end in `extension` and that are not
-/// among `listed` (paths relative to `directory`, as in a .pvd): the frames a run wrote after
-/// the checkpoint it is restarted from. Returns how many were removed. Throws OutputError.
+/// Removes the files of `directory`/`folder` whose names end in one of `extensions` and that
+/// are not among `listed` (paths relative to `directory`, as in a .pvd), and the piece folders
+/// of a split run's frames (`folder`/`folder`_NNNNNN/, run/field_frames.hpp) whose master file
+/// is not listed: the frames a run wrote after the checkpoint it is restarted from. Returns how
+/// many files and folders were removed. Throws OutputError.
 int remove_unlisted_files(const std::filesystem::path& directory, const std::string& folder,
-                          const std::string& extension,
+                          const std::vector<std::string>& extensions,
                           const std::vector<std::pair<double, std::string>>& listed);
 
 } // namespace fddem

@@ -73,10 +73,7 @@ RunResult Driver<Dim>::start(bool overwrite)
     }
     monitor_.message(memory_message(config_, run_memory_limit(config_)));
     report_derived_values(config_, monitor_);
-    const Simulation<Dim>& first = gathered();
-    if (is_writer()) {
-        outputs_.write_frame(first);
-    }
+    outputs_.write_frame(sim_);
     record_.next_particle_time = config_.output.particle_interval;
     record_.next_field_time = config_.output.field_interval;
     record_.next_checkpoint_time = config_.checkpoint.time_interval;
@@ -179,10 +176,7 @@ void Driver<Dim>::write_scheduled_outputs()
     // output.field_interval = 0: no frames between the first and the last.
     if (config_.output.field_interval > 0.0 &&
         take_due_output(clock, config_.output.field_interval, record_.next_field_time)) {
-        const Simulation<Dim>& state = gathered();
-        if (is_writer()) {
-            outputs_.write_frame(state);
-        }
+        outputs_.write_frame(sim_);
     }
 }
 
@@ -207,11 +201,14 @@ void Driver<Dim>::close_outputs(const std::string& status)
     // A closing field frame off the output schedule is left out of the checkpoint's frames:
     // a continued run drops it and writes its frames on the schedule.
     const std::size_t n_frames = outputs_.n_frames();
+    // Rank 0 alone holds the frames' list; a split frame is written by every rank.
+    const bool has_frame =
+        ranks_.max(is_writer() && outputs_.has_frame_at(sim_.clock().time) ? 1.0 : 0.0) > 0.0;
+    if (!has_frame) {
+        outputs_.write_frame(sim_);
+    }
     const Simulation<Dim>& state = gathered();
     if (is_writer()) {
-        if (!outputs_.has_frame_at(state.clock().time)) {
-            outputs_.write_frame(state);
-        }
         write_line_samples(state, config_.output.lines, directory_);
         write_summary(status);
     }

@@ -35,12 +35,14 @@ public:
     /// Builds the simulation from `config` (InputError for bad input, before anything is
     /// written), on `ranks`. `monitor` must outlive the driver.
     ///
-    /// On several ranks (issue 15; every rank holds all bodies) every rank steps its block, and
-    /// rank 0 alone writes: the run directory, solver.csv, the progress and messages (the other
-    /// ranks' monitors should be quiet), and the field frames, line samples, summary and
-    /// checkpoints of a one-process mirror of the run that the ranks' state is gathered into
-    /// first (io/gathering_archive.hpp). The files are those of a one-process run of the same
-    /// case; a checkpoint continues on any number of ranks.
+    /// On several ranks (issue 15; every rank holds all bodies) every rank steps its block and
+    /// writes its pieces of the field and particle frames (run/field_frames.hpp), and rank 0
+    /// alone writes the rest: the run directory, solver.csv, particles.csv, the frames' master
+    /// files and .pvd collections, the progress and messages (the other ranks' monitors should
+    /// be quiet), and the line samples, summary and checkpoints of a one-process mirror of the
+    /// run that the ranks' state is gathered into first (io/gathering_archive.hpp). The files
+    /// are those of a one-process run of the same case, but for the frames in pieces; a
+    /// checkpoint continues on any number of ranks.
     Driver(const CaseConfig& config, std::filesystem::path directory, RunMonitor& monitor,
            const Communicator& ranks = Communicator::self());
 
@@ -72,10 +74,10 @@ private:
     /// The last message of a completed run.
     [[nodiscard]] std::string completion_message() const;
     [[nodiscard]] double wall_seconds() const;
-    /// The run as one process holds it, for the outputs: the simulation itself on one
-    /// process; on several, the mirror on rank 0 after the ranks' state is gathered into it
-    /// (collective: every rank calls it at the same point; the other ranks get their own
-    /// block, which they do not write).
+    /// The run as one process holds it, for the line samples, summary and checkpoints: the
+    /// simulation itself on one process; on several, the mirror on rank 0 after the ranks'
+    /// state is gathered into it (collective: every rank calls it at the same point; the other
+    /// ranks get their own block, which they do not write).
     const Simulation<Dim>& gathered();
     /// Whether this process writes the run's files.
     [[nodiscard]] bool is_writer() const noexcept { return ranks_.rank() == 0; }

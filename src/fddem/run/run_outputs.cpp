@@ -64,14 +64,14 @@ void RunOutputs<Dim>::continue_from(const RunRecord& record)
     truncate_history(solver_path, record.solver_csv_bytes);
     solver_ = std::make_unique<CsvHistory>(solver_path, solver_columns(), CsvHistory::Continue{});
     fields_pvd_.assign(record.field_frames);
-    remove_unlisted_files(directory_, "fields", ".vtr", record.field_frames);
+    remove_unlisted_files(directory_, "fields", {".vtr", ".pvtr"}, record.field_frames);
     if (has_bodies_) {
         const fs::path particles_path = directory_ / "particles.csv";
         truncate_history(particles_path, record.particles_csv_bytes);
         particles_ = std::make_unique<CsvHistory>(particles_path, particle_columns<Dim>(),
                                                   CsvHistory::Continue{});
         particles_pvd_.assign(record.particle_frames);
-        remove_unlisted_files(directory_, "particles", ".vtp", record.particle_frames);
+        remove_unlisted_files(directory_, "particles", {".vtp", ".pvtp"}, record.particle_frames);
     }
 }
 

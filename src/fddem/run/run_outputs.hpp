@@ -34,7 +34,8 @@ public:
                      double wall_seconds);
     /// particles.csv: the bodies of `sim` now. Only with bodies.
     void append_particles(const Simulation<Dim>& sim);
-    /// The next field frame (and particles frame, with bodies).
+    /// The next field frame (and particles frame, with bodies). On a split grid every rank calls
+    /// it and writes its pieces (run/field_frames.hpp); the collections are rank 0's.
     void write_frame(const Simulation<Dim>& sim);
 
     [[nodiscard]] bool has_bodies() const noexcept { return has_bodies_; }
