@@ -26,10 +26,14 @@
 #     cavity3d.toml, Re 100, hypre, 10 steps): strong on 48³ cells, weak on 32³ cells per rank
 #     (the box grown along x, then y, then z). Prints the stepping time per step, the speed-up
 #     and the parallel efficiency, and the machine's core count: rows with more ranks than
-#     cores are oversubscribed and say nothing about scaling.
+#     cores are oversubscribed and say nothing about scaling. With --mpi-large also the
+#     issue's strong-scaling rows on 1 and 2 ranks: the cube at 128³ (5 steps) and ten Cate E4
+#     at d/h = 15.75 (105 × 105 × 168 cells, 3 steps).
+#  8. with --no-base: without the kernel and cavity tables (1-2), e.g. `--no-base --mpi 4`.
 # The kernel table includes contact detection (cell list vs brute force) for 1e3-1e5 disks.
 # Options: --openfoam [N] (default N = 256), --paper, --steady [R] (default R = 3 rounds),
-# --3d [full], --mpi [P] (default P = 4), --quick (smaller table), --threads T (default 1).
+# --3d [full], --mpi [P] (default P = 4), --mpi-large, --no-base, --quick (smaller table),
+# --threads T (default 1).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/.." && pwd)"
@@ -43,6 +47,8 @@ steady=0
 steady_rounds=3
 mpi=0
 mpi_ranks=4
+mpi_large=0
+base=1
 quick=0
 threads=1
 while [ $# -gt 0 ]; do
@@ -53,6 +59,8 @@ while [ $# -gt 0 ]; do
         --3d) three_d=1; if [ "${2:-}" = full ]; then three_d_full=1; shift; fi ;;
         --steady) steady=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then steady_rounds="$2"; shift; fi ;;
         --mpi) mpi=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then mpi_ranks="$2"; shift; fi ;;
+        --mpi-large) mpi=1; mpi_large=1 ;;
+        --no-base) base=0 ;;
         --threads) threads="$2"; shift ;;
         *) echo "bench/run.sh: unknown option '$1'" >&2; exit 2 ;;
     esac
@@ -79,26 +87,28 @@ openfoam_peer() {
     echo "$peer"
 }
 
-echo "== kernels (OMP_NUM_THREADS=$threads)"
-"$root/build/release/bench/fddem_bench" --benchmark_min_time=0.2 2>/dev/null |
-    grep -E '^(Benchmark|-|momentum|poisson|contact)'
+if [ "$base" = 1 ]; then
+    echo "== kernels (OMP_NUM_THREADS=$threads)"
+    "$root/build/release/bench/fddem_bench" --benchmark_min_time=0.2 2>/dev/null |
+        grep -E '^(Benchmark|-|momentum|poisson|contact)'
 
-echo
-echo "== lid-driven cavity, Re 100, dt = 0.5/N (OMP_NUM_THREADS=$threads)"
-grids="64 128 256 512"
-end=1.0
-[ "$quick" = 1 ] && grids="64 128 256" && end=0.5
-rows=()
-for n in $grids; do
-    dir="$out/cavity_n$n"
-    dt=$($python -c "print(0.5/$n)")
-    "$fddem" run cases/verification/cavity_re100/case.toml -o "$dir" --force -q \
-        --set "domain.cells=[$n,$n]" --set "time.dt=$dt" --set "time.end=$end" \
-        --set "time.steady=false" --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" \
-        --set "simple.tolerance=1e-4" --set 'simple.fft_planning="measure"'
-    rows+=("$n:$dir")
-done
-$python "$here/table.py" cavity "${rows[@]}"
+    echo
+    echo "== lid-driven cavity, Re 100, dt = 0.5/N (OMP_NUM_THREADS=$threads)"
+    grids="64 128 256 512"
+    end=1.0
+    [ "$quick" = 1 ] && grids="64 128 256" && end=0.5
+    rows=()
+    for n in $grids; do
+        dir="$out/cavity_n$n"
+        dt=$($python -c "print(0.5/$n)")
+        "$fddem" run cases/verification/cavity_re100/case.toml -o "$dir" --force -q \
+            --set "domain.cells=[$n,$n]" --set "time.dt=$dt" --set "time.end=$end" \
+            --set "time.steady=false" --set "time.steady_tolerance=1e-12" --set "output.field_interval=0" \
+            --set "simple.tolerance=1e-4" --set 'simple.fft_planning="measure"'
+        rows+=("$n:$dir")
+    done
+    $python "$here/table.py" cavity "${rows[@]}"
+fi
 
 if [ "$openfoam" = 1 ]; then
     echo
@@ -152,7 +162,7 @@ fi
 
 if [ "$mpi" = 1 ]; then
     echo
-    echo "== MPI scaling, lid-driven cube (OMP_NUM_THREADS=$threads, $(nproc) cores)"
+    echo "== MPI scaling, lid-driven cube (OMP_NUM_THREADS=$threads, $(nproc --all) cores)"
     launch=(mpirun --oversubscribe)
     if [ "$(id -u)" = 0 ]; then launch+=(--allow-run-as-root); fi
     cube=(docs/examples/cavity3d.toml --force -q --set time.max_steps=10
@@ -176,7 +186,20 @@ if [ "$mpi" = 1 ]; then
         rows+=("weak:$p:$dir")
         p=$((p * 2))
     done
-    $python "$here/table.py" mpi "$(nproc)" "${rows[@]}"
+    if [ "$mpi_large" = 1 ]; then
+        for p in 1 2; do
+            dir="$out/mpi_cube128_$p"
+            "${launch[@]}" -n "$p" "$fddem" run "${cube[@]}" -o "$dir" \
+                --set "domain.cells=[128,128,128]" --set time.max_steps=5
+            rows+=("strong_cube128:$p:$dir")
+            dir="$out/mpi_e4_16_$p"
+            "${launch[@]}" -n "$p" "$fddem" run cases/validation/ten_cate_e4/case.toml -o "$dir" \
+                --force -q --set "domain.cells=[105,105,168]" --set time.max_steps=3 \
+                --set output.field_interval=0 --set simple.pressure_solver=hypre
+            rows+=("strong_e4_16:$p:$dir")
+        done
+    fi
+    $python "$here/table.py" mpi "$(nproc --all)" "${rows[@]}"
 fi
 
 if [ "$steady" = 1 ]; then

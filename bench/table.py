@@ -3,6 +3,7 @@
 import argparse
 import csv
 import json
+import math
 import os
 import statistics
 import sys
@@ -67,7 +68,7 @@ def paper_table(entries):
 def three_d_table(entries):
     """3D sphere cases: cost per step and per cell and outer iteration, phase shares, memory."""
     print(
-        f"{'case':<14} {'cells':>9} {'steps':>6} {'s/step':>7} {'outer/step':>10} "
+        f"{'case':<14} {'cells':>11} {'steps':>6} {'s/step':>7} {'outer/step':>10} "
         f"{'ns/cell/outer':>13} {'momentum %':>10} {'pressure %':>10} {'coupling %':>10} "
         f"{'contact %':>9} {'peak MiB':>9} {'B/cell':>7}"
     )
@@ -89,7 +90,7 @@ def three_d_table(entries):
 def mpi_table(cores, entries):
     """Strong and weak scaling rows (kind:ranks:run_dir), each against its one-rank row."""
     cores = int(cores)
-    print(f"{'scaling':>7} {'ranks':>5} {'cells':>9} {'ms/step':>9} {'outer/step':>10} "
+    print(f"{'scaling':>14} {'ranks':>5} {'cells':>11} {'ms/step':>9} {'outer/step':>10} "
           f"{'speed-up':>8} {'efficiency':>10} {'pressure %':>10} {'momentum %':>10} "
           f"{'msgs/step':>9} {'KiB/step':>8} {'coll/step':>9} {'comm %':>6} "
           f"{'comm in mom. %':>14} {'comm in coupl. %':>16}")
@@ -105,7 +106,7 @@ def mpi_table(cores, entries):
             base[kind] = per_step
         # Strong: T1 / (p Tp); weak (the work grows with p): T1 / Tp.
         speed_up = base[kind] / per_step if kind in base else float("nan")
-        efficiency = speed_up / ranks if kind == "strong" else speed_up
+        efficiency = speed_up if kind == "weak" else speed_up / ranks
         note = "  (oversubscribed)" if ranks > cores else ""
         messages = summary.get("mpi_rank0_messages", 0) / steps
         kib = summary.get("mpi_rank0_message_bytes", 0) / steps / 1024
@@ -117,17 +118,73 @@ def mpi_table(cores, entries):
             own = summary.get(f"mpi_rank0_communication_seconds_{phase}", 0)
             return 100 * own / seconds if seconds > 0 else 0.0
 
-        print(f"{kind:>7} {ranks:>5} {'x'.join(str(c) for c in cells):>9} "
+        print(f"{kind:>14} {ranks:>5} {'x'.join(str(c) for c in cells):>11} "
               f"{1e3 * per_step:>9.1f} {outer / steps:>10.2f} {speed_up:>8.2f} "
               f"{efficiency:>10.2f} {100 * phases.get('pressure', 0) / stepping:>10.1f} "
               f"{100 * phases.get('momentum', 0) / stepping:>10.1f} {messages:>9.0f} "
               f"{kib:>8.0f} {collectives:>9.0f} {comm:>6.1f} {share('momentum'):>14.1f} "
               f"{share('coupling'):>16.1f}{note}")
-    print("  speed-up: T(1 rank) / T(p) per step; efficiency: speed-up / p (strong), speed-up "
+    print("  speed-up: T(1 rank) / T(p) per step; efficiency: speed-up / p (strong*), speed-up "
           "(weak, p times the cells). msgs, KiB, coll: rank 0's halo messages, their payload and "
           "its collectives per step; comm: rank 0's wall time inside fddem's own halo exchanges and "
           "collectives, waiting included, of the whole step and of the momentum and coupling "
           "phases (hypre's messages and time, i.e. the pressure solve's, are not counted).")
+    mpi_model(entries)
+
+
+# The cluster the efficiency model assumes: one message's latency [s] and the link's bandwidth
+# [B/s]. Typical of InfiniBand EDR/HDR (about 1-2 µs, 10-25 GB/s); the pessimistic pair is an
+# Ethernet-like cluster.
+CLUSTERS = (("InfiniBand-like", 1.5e-6, 10e9), ("Ethernet-like", 20e-6, 2e9))
+
+
+def mpi_model(entries, target_ranks=64):
+    """The expected weak-scaling efficiency on a cluster, from the weak rows' measured counts.
+
+    Rank 0 is a corner block: with the weak layout (the box doubled along x, then y, then z) it
+    has log2(p) neighbours up to 3, while a block inside a 4 x 4 x 4 layout has 6. Its messages
+    and bytes per step, scaled by 6 / neighbours, are an inside block's; its collectives are
+    every rank's. The time per step on a cluster is then the one-rank compute time T1 plus
+    messages * latency + bytes / bandwidth + collectives * (2 log2(p) latency + p * payload /
+    bandwidth) (the sums are all-gathers of each rank's values, added in rank order). hypre's
+    own messages, inside the pressure solve, are not counted by fddem and not in the model."""
+    weak = []
+    for entry in entries:
+        kind, ranks, run_dir = entry.split(":", 2)
+        if kind == "weak":
+            weak.append((int(ranks), run_cost_row(run_dir)))
+    t1 = next((row["per_step"] for ranks, row in weak if ranks == 1), None)
+    split = [(ranks, row) for ranks, row in weak if ranks > 1]
+    if t1 is None or not split:
+        return
+    ranks, row = max(split, key=lambda item: item[0])
+    neighbours = min(int(math.log2(ranks)), 3)
+    scale = 6 / neighbours
+    messages, message_bytes = row["messages"] * scale, row["bytes"] * scale
+    collectives = row["collectives"]
+    payload = row["collective_bytes"] / collectives if collectives else 0.0
+    print(f"  model of the weak scaling to {target_ranks} ranks on a cluster, from the {ranks}-rank "
+          f"row (rank 0 has {neighbours} neighbour(s); an inside block has 6): per step "
+          f"{messages:.0f} messages, {message_bytes / 1024:.0f} KiB, {collectives:.0f} "
+          f"collectives of {payload:.0f} B, against T1 = {1e3 * t1:.1f} ms of compute")
+    for name, latency, bandwidth in CLUSTERS:
+        halo = messages * latency + message_bytes / bandwidth
+        reduce = collectives * (2 * math.log2(target_ranks) * latency +
+                                target_ranks * payload / bandwidth)
+        efficiency = t1 / (t1 + halo + reduce)
+        print(f"    {name} ({1e6 * latency:.1f} µs, {bandwidth / 1e9:.0f} GB/s): halo "
+              f"{1e3 * halo:.1f} ms + collectives {1e3 * reduce:.1f} ms per step -> "
+              f"efficiency {efficiency:.2f} (hypre's messages not included)")
+
+
+def run_cost_row(run_dir):
+    """Per-step time and rank 0's per-step counts of a run."""
+    steps, stepping, _, _, summary = run_costs(run_dir)
+    return {"per_step": stepping / steps,
+            "messages": summary.get("mpi_rank0_messages", 0) / steps,
+            "bytes": summary.get("mpi_rank0_message_bytes", 0) / steps,
+            "collectives": summary.get("mpi_rank0_collectives", 0) / steps,
+            "collective_bytes": summary.get("mpi_rank0_collective_bytes", 0) / steps}
 
 
 def read_xy(path, skip_header=True):
