@@ -7,9 +7,9 @@
 
 namespace fddem::app {
 
-/// Exit statuses: 0 success, 1 internal error, 2 bad input, 3 numerical failure, 128 + the
-/// signal number (130 SIGINT, 143 SIGTERM, the shells' convention) when a signal stopped the
-/// run after a checkpoint.
+/// Exit statuses: 0 success, 1 internal error or an unwritable output, 2 bad input, 3 numerical
+/// failure, 128 + the signal number (130 SIGINT, 143 SIGTERM, the shells' convention) when a signal
+/// stopped the run after a checkpoint.
 inline constexpr int exit_success = 0;
 inline constexpr int exit_internal_error = 1;
 inline constexpr int exit_bad_input = 2;

@@ -3,6 +3,7 @@
 // statuses (the library throws; only app/ decides how a failure ends the process).
 
 #include "fddem/core/errors.hpp"
+#include "fddem/io/atomic_file.hpp"
 #include "fddem/linsolve/mpi_runtime.hpp"
 
 #include <CLI/CLI.hpp>
@@ -183,6 +184,12 @@ int main(int argc, char** argv)
         return info_command(keys, markdown);
     } catch (const fddem::InputError& e) {
         return fail(exit_bad_input, "fddem: " + e.formatted(), true);
+    } catch (const fddem::OutputError& e) {
+        // Neither fddem's fault nor the case's: the disk or the directory (full, removed, a
+        // directory where a file must go). On several ranks the rank that met it says it.
+        const std::string where = n_processes > 1 ? " (rank " + std::to_string(rank) + ")" : "";
+        return fail(exit_internal_error,
+                    "fddem: cannot write the run's output" + where + ": " + e.what(), false);
     } catch (const std::exception& e) {
         const std::string where = n_processes > 1 ? " (rank " + std::to_string(rank) + ")" : "";
         return fail(exit_internal_error, "fddem: internal error" + where + ": " + e.what(), false);

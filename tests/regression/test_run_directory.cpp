@@ -212,6 +212,27 @@ TEST_F(RunDirectory, ARestartInAReadOnlyDirectoryIsBadInputBeforeAnyWork)
     EXPECT_EQ(file_contents(dir / "solver.csv"), before);
 }
 
+TEST_F(RunDirectory, AFrameThatCannotBeWrittenStopsTheRunWithOneMessageNamingIt)
+{
+    // A directory where the second field frame (t = 0.25) must go: its rename fails mid-run,
+    // as on a full disk. One message naming the file and what failed, exit status 1, and the
+    // first frame left whole.
+    const fs::path dir = root_ / "run";
+    fs::create_directories(dir / "fields" / "fields_000001.vtr" / "x");
+    const Result result = run("run " + case_file_.string() + " -q --force -o " + dir.string());
+    EXPECT_EQ(result.status, 1) << result.output;
+    const std::vector<std::string> lines = lines_of(result.output);
+    ASSERT_FALSE(lines.empty());
+    // The memory estimate (said even with -q), then the failure, once, as the last line.
+    EXPECT_EQ(std::count_if(lines.begin(), lines.end(),
+                            [](const std::string& l) { return l.find("cannot write") != l.npos; }),
+              1)
+        << result.output;
+    EXPECT_EQ(lines.back().find("fddem: cannot write the run's output: "), 0U) << lines.back();
+    EXPECT_NE(lines.back().find("fields_000001.vtr"), std::string::npos) << lines.back();
+    EXPECT_GT(fs::file_size(dir / "fields" / "fields_000000.vtr"), 0U);
+}
+
 TEST_F(RunDirectory, AClosedStderrStopsThePrintingNotTheRun)
 {
     // Issue 17: `fddem run … 2>&1 | head -c 10` ended with exit status 141 (SIGPIPE), no
