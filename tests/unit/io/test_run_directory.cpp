@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "support/files_and_programs.hpp"
+
 namespace fddem {
 namespace {
 
@@ -19,10 +21,7 @@ class FrameFiles : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        dir_ = fs::temp_directory_path() /
-               ("fddem_test_frames_" +
-                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
+        dir_ = test::fresh_test_directory("fddem_test_frames_");
         // Frames 0 and 1 of one process, 2 and 3 of a split run on two ranks, and the user's.
         for (const char* file :
              {"fields/fields_000000.vtr", "fields/fields_000001.vtr", "fields/fields_000002.pvtr",
