@@ -165,14 +165,21 @@ if [ "$mpi" = 1 ]; then
     echo "== MPI scaling, lid-driven cube (OMP_NUM_THREADS=$threads, $(nproc --all) cores)"
     launch=(mpirun --oversubscribe)
     if [ "$(id -u)" = 0 ]; then launch+=(--allow-run-as-root); fi
-    cube=(docs/examples/cavity3d.toml --force -q --set time.max_steps=10
-          --set output.field_interval=0 --set simple.pressure_solver=hypre)
+    # The pressure by hypre on the blocks (rows strong, weak, strong_cube128) and by the direct
+    # FFT solver, FFTW-MPI's slabs on several ranks (rows *_fft).
+    cube_fft=(docs/examples/cavity3d.toml --force -q --set time.max_steps=10
+              --set output.field_interval=0 --set simple.pressure_solver=fft)
+    cube=("${cube_fft[@]}" --set simple.pressure_solver=hypre)
     rows=()
     p=1
     while [ "$p" -le "$mpi_ranks" ]; do
         dir="$out/mpi_strong_$p"
         "${launch[@]}" -n "$p" "$fddem" run "${cube[@]}" -o "$dir" --set "domain.cells=[48,48,48]"
         rows+=("strong:$p:$dir")
+        dir="$out/mpi_strong_fft_$p"
+        "${launch[@]}" -n "$p" "$fddem" run "${cube_fft[@]}" -o "$dir" \
+            --set "domain.cells=[48,48,48]"
+        rows+=("strong_fft:$p:$dir")
         # Weak: 32³ cells per rank, the box doubled along x, then y, then z.
         nx=1; ny=1; nz=1; q=$p; axis=0
         while [ "$q" -gt 1 ]; do
@@ -192,11 +199,20 @@ if [ "$mpi" = 1 ]; then
             "${launch[@]}" -n "$p" "$fddem" run "${cube[@]}" -o "$dir" \
                 --set "domain.cells=[128,128,128]" --set time.max_steps=5
             rows+=("strong_cube128:$p:$dir")
+            dir="$out/mpi_cube128_fft_$p"
+            "${launch[@]}" -n "$p" "$fddem" run "${cube_fft[@]}" -o "$dir" \
+                --set "domain.cells=[128,128,128]" --set time.max_steps=5
+            rows+=("strong_cube128_fft:$p:$dir")
             dir="$out/mpi_e4_16_$p"
             "${launch[@]}" -n "$p" "$fddem" run cases/validation/ten_cate_e4/case.toml -o "$dir" \
                 --force -q --set "domain.cells=[105,105,168]" --set time.max_steps=3 \
                 --set output.field_interval=0 --set simple.pressure_solver=hypre
             rows+=("strong_e4_16:$p:$dir")
+            dir="$out/mpi_e4_16_fft_$p"
+            "${launch[@]}" -n "$p" "$fddem" run cases/validation/ten_cate_e4/case.toml -o "$dir" \
+                --force -q --set "domain.cells=[105,105,168]" --set time.max_steps=3 \
+                --set output.field_interval=0 --set simple.pressure_solver=fft
+            rows+=("strong_e4_16_fft:$p:$dir")
         done
     fi
     $python "$here/table.py" mpi "$(nproc --all)" "${rows[@]}"

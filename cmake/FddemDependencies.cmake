@@ -7,6 +7,10 @@ find_package(MPI REQUIRED COMPONENTS C)
 find_package(ZLIB REQUIRED) # CRC-32 of checkpoint files
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+# FFTW's MPI transforms (libfftw3-mpi-dev, no pkg-config file): the pressure solve on a grid
+# split across ranks (linsolve/fft_mpi_poisson.hpp).
+find_path(FFTW3_MPI_INCLUDE_DIR fftw3-mpi.h REQUIRED)
+find_library(FFTW3_MPI_LIBRARY fftw3_mpi REQUIRED)
 
 # hypre ships neither a CMake config nor a pkg-config file on Debian 12.
 find_path(HYPRE_INCLUDE_DIR HYPRE.h PATH_SUFFIXES hypre REQUIRED)

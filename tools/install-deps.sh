@@ -8,7 +8,7 @@ packages=(
     clang-format clang-tidy
     clang libclang-rt-14-dev
     libeigen3-dev libtomlplusplus-dev libcli11-dev libfmt-dev
-    libfftw3-dev libhypre-dev libopenmpi-dev openmpi-bin zlib1g-dev
+    libfftw3-dev libfftw3-mpi-dev libhypre-dev libopenmpi-dev openmpi-bin zlib1g-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     python3 python3-numpy python3-matplotlib
     ffmpeg python3-pandas

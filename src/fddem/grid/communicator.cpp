@@ -207,6 +207,50 @@ void Communicator::exchange(std::span<const double> send, int destination,
           "MPI_Sendrecv");
 }
 
+std::vector<int> Communicator::all_gather(std::span<const int> local) const
+{
+    if (!mpi_) {
+        return {local.begin(), local.end()};
+    }
+    const ScopedSeconds timer(mpi_->sent.seconds);
+    count_collective(local.size() * sizeof(int));
+    std::vector<int> all(local.size() * static_cast<std::size_t>(mpi_->size));
+    check(MPI_Allgather(local.data(), static_cast<int>(local.size()), MPI_INT, all.data(),
+                        static_cast<int>(local.size()), MPI_INT, mpi_->comm),
+          "MPI_Allgather");
+    return all;
+}
+
+void Communicator::all_to_all(std::span<const double> send, std::span<const int> send_counts,
+                              std::span<double> receive, std::span<const int> receive_counts) const
+{
+    const auto n_ranks = static_cast<std::size_t>(size());
+    if (send_counts.size() != n_ranks || receive_counts.size() != n_ranks) {
+        throw InternalError("Communicator::all_to_all: one count per rank is needed");
+    }
+    if (!mpi_) {
+        if (send.size() != receive.size()) {
+            throw InternalError("Communicator::all_to_all: sizes differ");
+        }
+        std::copy(send.begin(), send.end(), receive.begin());
+        return;
+    }
+    std::vector<int> send_offsets(n_ranks, 0);
+    std::vector<int> receive_offsets(n_ranks, 0);
+    for (std::size_t q = 1; q < n_ranks; ++q) {
+        send_offsets[q] = send_offsets[q - 1] + send_counts[q - 1];
+        receive_offsets[q] = receive_offsets[q - 1] + receive_counts[q - 1];
+    }
+    const ScopedSeconds timer(mpi_->sent.seconds);
+    // Counted as one collective of the values that leave this rank.
+    const auto own = static_cast<std::size_t>(mpi_->rank);
+    count_collective((send.size() - static_cast<std::size_t>(send_counts[own])) * sizeof(double));
+    check(MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_DOUBLE,
+                        receive.data(), receive_counts.data(), receive_offsets.data(), MPI_DOUBLE,
+                        mpi_->comm),
+          "MPI_Alltoallv");
+}
+
 Communicator Communicator::cartesian(std::span<const int> dims,
                                      std::span<const bool> is_periodic) const
 {

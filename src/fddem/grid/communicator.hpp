@@ -18,6 +18,7 @@
 #include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace fddem {
 
@@ -72,6 +73,18 @@ public:
     /// values are copied. `tag` tells apart several exchanges between the same two ranks.
     void exchange(std::span<const double> send, int destination, std::span<double> receive,
                   int source, int tag) const;
+
+    /// Every rank's `local` values, rank after rank (MPI_Allgather; each rank gives as many).
+    /// On this process alone, `local` itself.
+    [[nodiscard]] std::vector<int> all_gather(std::span<const int> local) const;
+
+    /// Personalised all-to-all (MPI_Alltoallv): `send` holds, one after the other in rank
+    /// order, send_counts[q] values for each rank q; `receive` gets receive_counts[q] values from
+    /// each rank q, in rank order. The counts must agree pairwise across the ranks (what q sends
+    /// to r is what r expects from q). On this process alone, `send` is copied to `receive`.
+    /// Used to move a field between the grid's blocks and FFTW-MPI's slabs.
+    void all_to_all(std::span<const double> send, std::span<const int> send_counts,
+                    std::span<double> receive, std::span<const int> receive_counts) const;
 
     /// This rank's traffic through this communicator so far (zero on self()).
     [[nodiscard]] Traffic traffic() const noexcept;

@@ -346,8 +346,9 @@ std::vector<KeySpec> case_schema()
                           "upwind (first order)."),
                       &CaseConfig::simple, &SimpleConfig::convection));
     s.push_back(bound(key("simple", "pressure_solver", T::string, none, "\"auto\"",
-                          "Pressure-correction solver: fft (direct, FFTW), hypre (PFMG-"
-                          "preconditioned CG) or auto (fft wherever the boundaries allow)."),
+                          "Pressure-correction solver: fft (direct, FFTW; on several ranks "
+                          "FFTW-MPI's slabs), hypre (PFMG-preconditioned CG) or auto (fft "
+                          "wherever the boundaries allow, hypre on more ranks than FFT planes)."),
                       &CaseConfig::simple, &SimpleConfig::pressure_solver));
     s.push_back(bound(key("simple", "fft_planning", T::string, none, "\"estimate\"",
                           "FFTW planning: estimate (the same plan every run: bit-identical "

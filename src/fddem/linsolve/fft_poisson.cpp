@@ -3,18 +3,13 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/grid/loops.hpp"
+#include "fddem/linsolve/fftw_support.hpp"
+#include "fddem/linsolve/laplacian_eigenvalue.hpp"
 
 #include <fftw3.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdlib>
-#include <mutex>
-#include <numbers>
-
-#ifdef FDDEM_HAVE_OPENMP
-#include <omp.h>
-#endif
 
 namespace fddem {
 
@@ -31,13 +26,7 @@ struct FftPoissonSolver<Dim>::Plans {
     std::array<fftw_r2r_kind, Dim> backward_kind{};
     unsigned flags = FFTW_ESTIMATE;
 
-    explicit Plans(std::size_t n) : work(fftw_alloc_real(n)), size(n)
-    {
-        if (work == nullptr) {
-            throw InternalError("FFTW could not allocate the Poisson work array");
-        }
-        std::fill(work, work + n, 0.0);
-    }
+    explicit Plans(std::size_t n) : work(allocate_fftw_work(n)), size(n) {}
     Plans(const Plans&) = delete;
     Plans& operator=(const Plans&) = delete;
     Plans(Plans&&) = delete;
@@ -66,16 +55,7 @@ struct FftPoissonSolver<Dim>::Plans {
     void make()
     {
         destroy();
-#ifdef FDDEM_HAVE_OPENMP
-        // FFTW's thread support is process-wide and must be started once (FFTW manual §5.2).
-        static std::once_flag started;
-        std::call_once(started, [] {
-            if (fftw_init_threads() == 0) {
-                throw InternalError("FFTW could not start its threads");
-            }
-        });
-        fftw_plan_with_nthreads(omp_get_max_threads());
-#endif
+        prepare_fftw_threads();
         forward = fftw_plan_r2r(Dim, dims.data(), work, work, forward_kind.data(), flags);
         backward = fftw_plan_r2r(Dim, dims.data(), work, work, backward_kind.data(), flags);
         if (forward == nullptr || backward == nullptr) {
@@ -83,21 +63,6 @@ struct FftPoissonSolver<Dim>::Plans {
         }
     }
 };
-
-namespace {
-
-/// Eigenvalue of the 1-D three-point second difference for mode m of n cells of size h:
-/// periodic (real Fourier, half-complex storage: modes m and n − m share a frequency)
-/// λ = −(2 − 2 cos(2πk/n))/h², k = min(m, n − m); zero-gradient walls (DCT-II)
-/// λ = −(2 − 2 cos(πm/n))/h².
-double eigenvalue(int m, int n, double h, bool is_periodic)
-{
-    const double theta =
-        is_periodic ? 2.0 * std::numbers::pi * std::min(m, n - m) / n : std::numbers::pi * m / n;
-    return -(2.0 - 2.0 * std::cos(theta)) / (h * h);
-}
-
-} // namespace
 
 template <int Dim>
 FftPoissonSolver<Dim>::FftPoissonSolver(const MacGrid<Dim>& grid,
@@ -127,8 +92,9 @@ FftPoissonSolver<Dim>::FftPoissonSolver(const MacGrid<Dim>& grid,
     for (std::size_t flat = 0; flat < n_total; ++flat) {
         double lambda = 0.0;
         for (int d = 0; d < Dim; ++d) {
-            lambda += eigenvalue(m[static_cast<std::size_t>(d)], grid.cells(d), grid.spacing(d),
-                                 is_periodic[static_cast<std::size_t>(d)]);
+            lambda +=
+                laplacian_eigenvalue(m[static_cast<std::size_t>(d)], grid.cells(d), grid.spacing(d),
+                                     is_periodic[static_cast<std::size_t>(d)]);
         }
         // The constant mode (λ = 0) is the null space: its coefficient is set to zero,
         // which removes the mean of rhs and returns the zero-mean solution.

@@ -40,8 +40,10 @@ public:
     virtual void restore_plans(const std::string& record) { static_cast<void>(record); }
 };
 
-/// The pressure-correction solver: the direct FFT solver, hypre's PFMG-preconditioned CG, or
-/// automatic (the FFT solver wherever the boundaries allow it: every boundary here does).
+/// The pressure-correction solver: the direct FFT solver (FFTW-MPI's slabs on a grid split
+/// across ranks), hypre's PFMG-preconditioned CG, or automatic (the FFT solver wherever the
+/// boundaries allow it, which every boundary here does, unless a split grid has more ranks
+/// than FFTW-MPI has planes to give them: then hypre).
 enum class PoissonSolverKind { automatic, fft, hypre };
 
 /// FFT plans by measurement (FFTW_MEASURE: ≈ 1.7× faster transforms at 256², but the plan
