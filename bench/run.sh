@@ -165,8 +165,8 @@ if [ "$mpi" = 1 ]; then
     echo "== MPI scaling, lid-driven cube (OMP_NUM_THREADS=$threads, $(nproc --all) cores)"
     launch=(mpirun --oversubscribe)
     if [ "$(id -u)" = 0 ]; then launch+=(--allow-run-as-root); fi
-    # The pressure by hypre on the blocks (rows strong, weak, strong_cube128) and by the direct
-    # FFT solver, FFTW-MPI's slabs on several ranks (rows *_fft).
+    # The pressure by hypre on the blocks (rows strong, weak, strong_cube128, strong_e4_16) and
+    # by the direct FFT solver, FFTW-MPI's slabs on several ranks (the same rows, *_fft).
     cube_fft=(docs/examples/cavity3d.toml --force -q --set time.max_steps=10
               --set output.field_interval=0 --set simple.pressure_solver=fft)
     cube=("${cube_fft[@]}" --set simple.pressure_solver=hypre)
@@ -191,6 +191,11 @@ if [ "$mpi" = 1 ]; then
             --set "domain.cells=[$((32 * nx)),$((32 * ny)),$((32 * nz))]" \
             --set "domain.size=[$nx,$ny,$nz]"
         rows+=("weak:$p:$dir")
+        dir="$out/mpi_weak_fft_$p"
+        "${launch[@]}" -n "$p" "$fddem" run "${cube_fft[@]}" -o "$dir" \
+            --set "domain.cells=[$((32 * nx)),$((32 * ny)),$((32 * nz))]" \
+            --set "domain.size=[$nx,$ny,$nz]"
+        rows+=("weak_fft:$p:$dir")
         p=$((p * 2))
     done
     if [ "$mpi_large" = 1 ]; then

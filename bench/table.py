@@ -92,7 +92,7 @@ def mpi_table(cores, entries):
     cores = int(cores)
     print(f"{'scaling':>14} {'ranks':>5} {'cells':>11} {'ms/step':>9} {'outer/step':>10} "
           f"{'speed-up':>8} {'efficiency':>10} {'pressure %':>10} {'momentum %':>10} "
-          f"{'msgs/step':>9} {'KiB/step':>8} {'coll/step':>9} {'comm %':>6} "
+          f"{'msgs/step':>9} {'KiB/step':>8} {'coll/step':>9} {'a2a KiB/step':>12} {'comm %':>6} "
           f"{'comm in mom. %':>14} {'comm in coupl. %':>16}")
     base = {}
     for entry in entries:
@@ -106,11 +106,12 @@ def mpi_table(cores, entries):
             base[kind] = per_step
         # Strong: T1 / (p Tp); weak (the work grows with p): T1 / Tp.
         speed_up = base[kind] / per_step if kind in base else float("nan")
-        efficiency = speed_up if kind == "weak" else speed_up / ranks
+        efficiency = speed_up if kind.startswith("weak") else speed_up / ranks
         note = "  (oversubscribed)" if ranks > cores else ""
         messages = summary.get("mpi_rank0_messages", 0) / steps
         kib = summary.get("mpi_rank0_message_bytes", 0) / steps / 1024
         collectives = summary.get("mpi_rank0_collectives", 0) / steps
+        a2a_kib = summary.get("mpi_rank0_all_to_all_bytes", 0) / steps / 1024
         comm = 100 * summary.get("mpi_rank0_communication_seconds", 0) / stepping
 
         def share(phase):
@@ -122,14 +123,17 @@ def mpi_table(cores, entries):
               f"{1e3 * per_step:>9.1f} {outer / steps:>10.2f} {speed_up:>8.2f} "
               f"{efficiency:>10.2f} {100 * phases.get('pressure', 0) / stepping:>10.1f} "
               f"{100 * phases.get('momentum', 0) / stepping:>10.1f} {messages:>9.0f} "
-              f"{kib:>8.0f} {collectives:>9.0f} {comm:>6.1f} {share('momentum'):>14.1f} "
+              f"{kib:>8.0f} {collectives:>9.0f} {a2a_kib:>12.0f} {comm:>6.1f} {share('momentum'):>14.1f} "
               f"{share('coupling'):>16.1f}{note}")
     print("  speed-up: T(1 rank) / T(p) per step; efficiency: speed-up / p (strong*), speed-up "
           "(weak, p times the cells). msgs, KiB, coll: rank 0's halo messages, their payload and "
-          "its collectives per step; comm: rank 0's wall time inside fddem's own halo exchanges and "
-          "collectives, waiting included, of the whole step and of the momentum and coupling "
-          "phases (hypre's messages and time, i.e. the pressure solve's, are not counted).")
-    mpi_model(entries)
+          "its collectives per step; a2a: what left rank 0 in the all-to-alls between the grid's "
+          "blocks and FFTW-MPI's slabs (*_fft rows); comm: rank 0's wall time inside fddem's own "
+          "halo exchanges, collectives and all-to-alls, waiting included, of the whole step and of "
+          "the momentum and coupling phases (hypre's and FFTW-MPI's own messages and time are not "
+          "counted).")
+    mpi_model(entries, "weak")
+    mpi_model(entries, "weak_fft")
 
 
 # The cluster the efficiency model assumes: one message's latency [s] and the link's bandwidth
@@ -138,20 +142,26 @@ def mpi_table(cores, entries):
 CLUSTERS = (("InfiniBand-like", 1.5e-6, 10e9), ("Ethernet-like", 20e-6, 2e9))
 
 
-def mpi_model(entries, target_ranks=64):
-    """The expected weak-scaling efficiency on a cluster, from the weak rows' measured counts.
+def mpi_model(entries, kind, target_ranks=64):
+    """The expected weak-scaling efficiency on a cluster, from the measured counts of the `kind`
+    rows (weak: hypre's pressure; weak_fft: FFTW-MPI's).
 
     Rank 0 is a corner block: with the weak layout (the box doubled along x, then y, then z) it
     has log2(p) neighbours up to 3, while a block inside a 4 x 4 x 4 layout has 6. Its messages
     and bytes per step, scaled by 6 / neighbours, are an inside block's; its collectives are
     every rank's. The time per step on a cluster is then the one-rank compute time T1 plus
     messages * latency + bytes / bandwidth + collectives * (2 log2(p) latency + p * payload /
-    bandwidth) (the sums are all-gathers of each rank's values, added in rank order). hypre's
-    own messages, inside the pressure solve, are not counted by fddem and not in the model."""
+    bandwidth) (the sums are all-gathers of each rank's values, added in rank order).
+    hypre's own messages, inside the pressure solve, are not counted by fddem and not in the
+    model. FFTW-MPI's are modelled: per pressure solve (one per outer iteration) fddem's two
+    all-to-alls between blocks and slabs and FFTW's two transposes (one each way with the
+    transposed output and input), each a pairwise exchange of (p - 1) messages carrying
+    (p - 1)/p of the rank's cells, 8 B each; the blocks' all-to-alls are taken at that bound
+    (where a block is already a slab they move nothing)."""
     weak = []
     for entry in entries:
-        kind, ranks, run_dir = entry.split(":", 2)
-        if kind == "weak":
+        row_kind, ranks, run_dir = entry.split(":", 2)
+        if row_kind == kind:
             weak.append((int(ranks), run_cost_row(run_dir)))
     t1 = next((row["per_step"] for ranks, row in weak if ranks == 1), None)
     split = [(ranks, row) for ranks, row in weak if ranks > 1]
@@ -163,24 +173,34 @@ def mpi_model(entries, target_ranks=64):
     messages, message_bytes = row["messages"] * scale, row["bytes"] * scale
     collectives = row["collectives"]
     payload = row["collective_bytes"] / collectives if collectives else 0.0
-    print(f"  model of the weak scaling to {target_ranks} ranks on a cluster, from the {ranks}-rank "
+    is_fft = kind == "weak_fft"
+    transposes = 4 * row["outer"] if is_fft else 0.0
+    transpose_bytes = 8 * row["cells"] / ranks * (target_ranks - 1) / target_ranks
+    print(f"  model of the {kind} scaling to {target_ranks} ranks on a cluster, from the {ranks}-rank "
           f"row (rank 0 has {neighbours} neighbour(s); an inside block has 6): per step "
           f"{messages:.0f} messages, {message_bytes / 1024:.0f} KiB, {collectives:.0f} "
-          f"collectives of {payload:.0f} B, against T1 = {1e3 * t1:.1f} ms of compute")
+          f"collectives of {payload:.0f} B"
+          + (f", {transposes:.0f} all-to-alls of {transpose_bytes / 1024:.0f} KiB" if is_fft else "")
+          + f", against T1 = {1e3 * t1:.1f} ms of compute")
     for name, latency, bandwidth in CLUSTERS:
         halo = messages * latency + message_bytes / bandwidth
         reduce = collectives * (2 * math.log2(target_ranks) * latency +
                                 target_ranks * payload / bandwidth)
-        efficiency = t1 / (t1 + halo + reduce)
+        exchange = transposes * ((target_ranks - 1) * latency + transpose_bytes / bandwidth)
+        efficiency = t1 / (t1 + halo + reduce + exchange)
+        pressure = (f" + all-to-alls {1e3 * exchange:.1f} ms" if is_fft else "")
+        left_out = "" if is_fft else " (hypre's messages not included)"
         print(f"    {name} ({1e6 * latency:.1f} µs, {bandwidth / 1e9:.0f} GB/s): halo "
-              f"{1e3 * halo:.1f} ms + collectives {1e3 * reduce:.1f} ms per step -> "
-              f"efficiency {efficiency:.2f} (hypre's messages not included)")
+              f"{1e3 * halo:.1f} ms + collectives {1e3 * reduce:.1f} ms{pressure} per step -> "
+              f"efficiency {efficiency:.2f}{left_out}")
 
 
 def run_cost_row(run_dir):
     """Per-step time and rank 0's per-step counts of a run."""
-    steps, stepping, _, _, summary = run_costs(run_dir)
-    return {"per_step": stepping / steps,
+    steps, stepping, _, outer, summary = run_costs(run_dir)
+    with open(os.path.join(run_dir, "case.toml"), "rb") as f:
+        cells = math.prod(tomllib.load(f)["domain"]["cells"])
+    return {"per_step": stepping / steps, "outer": outer / steps, "cells": cells,
             "messages": summary.get("mpi_rank0_messages", 0) / steps,
             "bytes": summary.get("mpi_rank0_message_bytes", 0) / steps,
             "collectives": summary.get("mpi_rank0_collectives", 0) / steps,

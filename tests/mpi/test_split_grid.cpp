@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <random>
 #include <sstream>
 #include <string>
@@ -211,6 +212,55 @@ TYPED_TEST(SplitGridTest, TrafficCountsEachHaloMessageAndCollective)
     EXPECT_DOUBLE_EQ(pressure, comm.traffic().seconds - after_sum.seconds);
     EXPECT_LE(pressure, times[Phase::pressure]);
     EXPECT_EQ(times.communication[static_cast<std::size_t>(Phase::momentum)], 0.0);
+}
+
+TEST(SplitCommunicator, AllToAllDeliversEachRanksShareInRankOrderAndIsCounted)
+{
+    // Rank r sends (r + 1)(q + 2) values to rank q, each naming r, q and its place; every rank
+    // must receive exactly what was meant for it, in rank order, and count one all-to-all of
+    // what left it (not what it kept).
+    const Communicator world = Communicator::world();
+    const int n = world.size();
+    const int me = world.rank();
+    const auto count = [](int from, int to) { return (from + 1) * (to + 2); };
+    const auto value = [](int from, int to, int k) { return 1e6 * from + 1e3 * to + k; };
+    std::vector<int> send_counts;
+    std::vector<int> receive_counts;
+    std::vector<double> send;
+    for (int q = 0; q < n; ++q) {
+        send_counts.push_back(count(me, q));
+        receive_counts.push_back(count(q, me));
+        for (int k = 0; k < count(me, q); ++k) {
+            send.push_back(value(me, q, k));
+        }
+    }
+    std::vector<double> receive(
+        static_cast<std::size_t>(std::accumulate(receive_counts.begin(), receive_counts.end(), 0)));
+    const Traffic before = world.traffic();
+    world.all_to_all(send, send_counts, receive, receive_counts);
+    const Traffic after = world.traffic();
+    std::size_t at = 0;
+    int n_wrong = 0;
+    for (int q = 0; q < n; ++q) {
+        for (int k = 0; k < count(q, me); ++k) {
+            n_wrong += receive[at++] == value(q, me, k) ? 0 : 1;
+        }
+    }
+    EXPECT_EQ(n_wrong, 0);
+    EXPECT_EQ(after.all_to_alls - before.all_to_alls, 1);
+    const long kept = count(me, me);
+    EXPECT_EQ(after.all_to_all_bytes - before.all_to_all_bytes,
+              (static_cast<long>(send.size()) - kept) * static_cast<long>(sizeof(double)));
+    EXPECT_EQ(after.collectives, before.collectives);
+
+    // all_gather: every rank's values, rank after rank.
+    const std::vector<int> mine{me, 10 * me + 1};
+    const std::vector<int> all = world.all_gather(mine);
+    ASSERT_EQ(all.size(), static_cast<std::size_t>(2 * n));
+    for (int q = 0; q < n; ++q) {
+        EXPECT_EQ(all[static_cast<std::size_t>(2 * q)], q);
+        EXPECT_EQ(all[static_cast<std::size_t>(2 * q + 1)], 10 * q + 1);
+    }
 }
 
 TYPED_TEST(SplitGridTest, FillGivesEveryEntryItsOneProcessValue)

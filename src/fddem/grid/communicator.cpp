@@ -242,9 +242,10 @@ void Communicator::all_to_all(std::span<const double> send, std::span<const int>
         receive_offsets[q] = receive_offsets[q - 1] + receive_counts[q - 1];
     }
     const ScopedSeconds timer(mpi_->sent.seconds);
-    // Counted as one collective of the values that leave this rank.
     const auto own = static_cast<std::size_t>(mpi_->rank);
-    count_collective((send.size() - static_cast<std::size_t>(send_counts[own])) * sizeof(double));
+    ++mpi_->sent.all_to_alls;
+    mpi_->sent.all_to_all_bytes += static_cast<long>(
+        (send.size() - static_cast<std::size_t>(send_counts[own])) * sizeof(double));
     check(MPI_Alltoallv(send.data(), send_counts.data(), send_offsets.data(), MPI_DOUBLE,
                         receive.data(), receive_counts.data(), receive_offsets.data(), MPI_DOUBLE,
                         mpi_->comm),

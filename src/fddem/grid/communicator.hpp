@@ -27,13 +27,17 @@ struct MpiCommunicator; // communicator.cpp: holds the MPI_Comm, so mpi.h stays 
 }
 
 /// What this rank has sent through one communicator since it was made (issue 15's message
-/// counts): the halo exchange's point-to-point messages and the collectives (sums, maxima,
-/// broadcasts) it took part in. hypre's own messages, on a duplicate of the handle, are not here.
+/// counts): the halo exchange's point-to-point messages, the collectives (sums, maxima,
+/// broadcasts, gathers) it took part in, and the all-to-alls that move a field between the
+/// grid's blocks and FFTW-MPI's slabs. hypre's and FFTW-MPI's own messages, on their own
+/// handles, are not here.
 struct Traffic {
     long messages = 0;         ///< point-to-point sends to another rank
     long bytes = 0;            ///< their payload [B]
-    long collectives = 0;      ///< reductions and broadcasts
+    long collectives = 0;      ///< reductions, broadcasts and gathers
     long collective_bytes = 0; ///< this rank's contribution to them [B]
+    long all_to_alls = 0;      ///< personalised all-to-alls (all_to_all)
+    long all_to_all_bytes = 0; ///< what left this rank in them [B]
     double seconds = 0.0;      ///< wall time inside all of these calls, waiting included [s]
 };
 
