@@ -71,7 +71,7 @@ RunResult Driver<Dim>::start(bool overwrite)
             outputs_.append_particles(sim_);
         }
     }
-    monitor_.message(memory_message(config_, run_memory_limit(config_)));
+    report_start(config_, monitor_);
     report_derived_values(config_, monitor_);
     outputs_.write_frame(sim_);
     record_.next_particle_time = config_.output.particle_interval;

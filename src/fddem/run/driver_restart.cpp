@@ -136,7 +136,7 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
         monitor_.message(fmt::format("fddem: checkpoint {} {}; set aside as {}", file.path.string(),
                                      file.reason, aside.filename().string()));
     }
-    monitor_.message(memory_message(config_, run_memory_limit(config_)));
+    report_start(config_, monitor_);
     monitor_.message(fmt::format("fddem: restarting {} from step {} (t = {:g} s), {}",
                                  directory_.string(), clock.step, clock.time,
                                  used->path.filename().string()));

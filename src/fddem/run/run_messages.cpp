@@ -2,10 +2,16 @@
 #include "fddem/run/run_messages.hpp"
 
 #include "fddem/io/case_names.hpp"
+#include "fddem/run/memory_estimate.hpp"
+#include "fddem/run/thread_placement.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+
+#ifdef FDDEM_HAVE_OPENMP
+#include <omp.h>
+#endif
 
 namespace fddem {
 namespace {
@@ -26,6 +32,17 @@ std::string collision_text(const CaseConfig& config)
 }
 
 } // namespace
+
+void report_start(const CaseConfig& config, RunMonitor& monitor)
+{
+    monitor.message(memory_message(config, run_memory_limit(config)));
+#ifdef FDDEM_HAVE_OPENMP
+    const std::string placement = thread_placement_warning(omp_get_max_threads(), usable_cpus());
+    if (!placement.empty()) {
+        monitor.message(placement);
+    }
+#endif
+}
 
 void report_derived_values(const CaseConfig& config, RunMonitor& monitor)
 {
