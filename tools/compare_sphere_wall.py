@@ -12,11 +12,11 @@ set beside κ_hydro; the largest deviation of the total over 0.1 ≤ δ/r ≤ 2.
 against δ/r of every run.
 
 A run with two spheres (cases/validation/two_sphere_approach): the same per sphere at the
-surface-to-surface gaps g/r = 4, 2, 1, 0.6, 0.4, 0.2, 0.1, 0.05 against the exact κ (Brenner's
-free-plane series at δ = g/2, python/fddem/two_spheres.py), the largest deviation over 0.1 ≤
-g/r ≤ 2, and the largest difference between the two spheres' forces (by symmetry they are equal
-and opposite). With -o, κ and κ/κ_exact against g/r of both spheres (two panels; give the runs
-of one kind to one figure).
+surface-to-surface gaps g/r = 4, 2, 1, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.07 against the exact κ
+(Brenner's free-plane series at δ = g/2, python/fddem/two_spheres.py), the largest deviation
+over 0.1 ≤ g/r ≤ 2, and the largest difference between the two spheres' forces (by symmetry
+they are equal and opposite). With -o, κ and κ/κ_exact against g/r of both spheres (two
+panels; give the runs of one kind to one figure).
 """
 import os
 import sys

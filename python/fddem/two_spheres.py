@@ -17,10 +17,10 @@ Its limits, in g:
 fddem's pair lubrication (src/fddem/contact/lubrication.cpp) for equal spheres is 6πμr
 [(1/4)(r/g) + (9/40) ln(r/g)] times the closing speed 2U: the near-contact form without C.
 
-A run (cases/validation/two_sphere_approach; tools/compare_sphere_wall.py) moves two prescribed spheres at ±U along one axis.
-Each sphere's rows are compared as the wall case's are (sphere_wall.force_parts): the resolved
-force (f*) at the gap where the step began, g + 2UΔt, the lubrication (lubrication_f*, the mean
-over the DEM sub-steps) at mid-step, g + UΔt.
+A run (cases/validation/two_sphere_approach; tools/compare_sphere_wall.py) moves two prescribed
+spheres at ±U along one axis. Each sphere's rows are compared as the wall case's are
+(sphere_wall.force_parts): the resolved force (f*) at the gap where the step began, g + 2UΔt,
+the lubrication (lubrication_f*, the mean over the DEM sub-steps) at mid-step, g + UΔt.
 """
 
 import math
@@ -33,8 +33,8 @@ from .sphere_wall import axis_name, force_parts, free_plane_kappa, kappa_table, 
 
 LABEL = "exact (Brenner 1961 free plane at δ = g/2)"
 # The gaps of the comparison table (g/r, surface to surface), from the far field into the
-# lubrication range (2 h = g/r 0.5 at d/h = 8).
-TABLE_RATIOS = (4.0, 2.0, 1.0, 0.6, 0.4, 0.2, 0.1, 0.05)
+# lubrication range (2 h = g/r 0.5 at d/h = 8); the case's last resolved force is at 0.0625.
+TABLE_RATIOS = (4.0, 2.0, 1.0, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.07)
 NEAR_CONTACT_CONSTANT = 1.3456
 
 
@@ -129,16 +129,18 @@ def plot(axes, run_dirs, labels=None):
     dashed, total solid) and κ / κ_exact (shaded ±10 %); the lubrication range g = h_Δ dotted."""
     top, bottom = axes
     labels = labels or [os.path.basename(os.path.normpath(r)) for r in run_dirs]
+    covered = []
     for run, label in zip(run_dirs, labels):
         for h, marker in zip(approach_histories(run), ("o", "x")):
             row = per_row(h, exact_kappa)
+            covered += [row["gap"].min(), row["gap"].max()]
             name = f"{label}, sphere {h['id']}"
-            (line,) = top.plot(row["gap"], row["total"], marker=marker, ms=3, markevery=8, lw=1,
-                               label=f"{name}: total")
+            (line,) = top.plot(row["gap"], row["total"], marker=marker, ms=4, markevery=0.08,
+                               lw=1, label=f"{name}: total")
             top.plot(row["gap"], row["hydro"], "--", color=line.get_color(), lw=1,
                      label=f"{name}: resolved")
-            bottom.plot(row["gap"], row["total"] / row["exact"], marker=marker, ms=3,
-                        markevery=8, lw=1, color=line.get_color(), label=f"{name}: total")
+            bottom.plot(row["gap"], row["total"] / row["exact"], marker=marker, ms=4,
+                        markevery=0.08, lw=1, color=line.get_color(), label=f"{name}: total")
             bottom.plot(row["gap"], row["hydro"] / row["exact"], "--", lw=1,
                         color=line.get_color(), label=f"{name}: resolved")
         p = run_parameters(run)
@@ -147,7 +149,7 @@ def plot(axes, run_dirs, labels=None):
             spacing = domain["size"][p["axis"]] / domain["cells"][p["axis"]]
             for a in axes:
                 a.axvline(p["range"] * spacing / p["radius"], color="0.5", ls=":", lw=1)
-    gaps = np.geomspace(0.02, 5.0, 200)
+    gaps = np.geomspace(min(covered), max(covered), 200)
     top.plot(gaps, exact_kappa(gaps), "k", lw=1.5, label=LABEL)
     top.set_yscale("log")
     top.set_ylabel("κ = F / (6πμrU)")

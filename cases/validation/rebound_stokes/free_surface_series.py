@@ -69,7 +69,8 @@ def main():
     worst = max(abs(summed(d) / float(kappa(d, plane)[0]) - 1)
                 for d in (2, 1, 0.5, 0.2, 0.1, 0.05, 0.02)
                 for plane, summed in (("free", free_plane_kappa), ("wall", brenner_kappa)))
-    print(f"python/fddem/sphere_wall.py against these sums: largest relative difference {worst:.1e}")
+    print(f"python/fddem/sphere_wall.py against these sums: largest relative difference "
+          f"{worst:.1e}")
     ok &= worst < 1e-12
     print("checks", "passed" if ok else "FAILED")
     return 0 if ok else 1
