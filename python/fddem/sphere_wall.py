@@ -42,25 +42,57 @@ def brenner_kappa(delta_over_r, tolerance=1e-15, max_terms=1_000_000):
     changes the sum by less than `tolerance` (relative). The terms decay as exp(−(2n+1)α), so
     δ/r = 0.01 (α = 0.14) needs about 130 terms. Written with e^{−x}, x = (2n+1)α, so that no
     sinh overflows."""
+    return _summed(delta_over_r, _wall_bracket, tolerance, max_terms)
+
+
+def free_plane_kappa(delta_over_r, tolerance=1e-15, max_terms=1_000_000):
+    """κ = F/(6πμrU) of a sphere approaching a flat shear-free plane at gap δ/r (Brenner 1961,
+    the free-surface series; cases/validation/rebound_stokes/two_spheres_free_surface.md):
+
+        κ = (4/3) sinh α Σ n(n+1)/((2n−1)(2n+3))
+              · [ (4 cosh²((n+½)α) + (2n+1)² sinh²α) / (2 sinh((2n+1)α) − (2n+1) sinh 2α) − 1 ]
+
+    It is also the force on each of two equal spheres closing head-on at ±U with surface gap
+    2δ: the mid-plane is then shear-free with no normal velocity (python/fddem/two_spheres.py).
+    Summed as brenner_kappa() is."""
+    return _summed(delta_over_r, _free_bracket, tolerance, max_terms)
+
+
+def _wall_bracket(m, e1, sinh_2a, sinh_a2):
+    """The rigid wall's bracket (2 sinh x + m sinh 2α)/(2 cosh x − 2 − m² sinh²α) − 1, x = mα,
+    as (numerator − denominator, denominator) after multiplying both by e^{−x} = e1:
+    (1 − e^{−2x} + m sinh2α e^{−x}) / (1 + e^{−2x} − 2e^{−x} − m² sinh²α e^{−x})."""
+    numerator = 2.0 * e1 - 2.0 * e1 * e1 + e1 * (m * sinh_2a + m * m * sinh_a2)
+    denominator = 1.0 + e1 * e1 - 2.0 * e1 - m * m * sinh_a2 * e1
+    return numerator, denominator
+
+
+def _free_bracket(m, e1, sinh_2a, sinh_a2):
+    """The free plane's bracket (2 cosh x + 2 + m² sinh²α)/(2 sinh x − m sinh 2α) − 1
+    (4 cosh²(x/2) = 2 cosh x + 2), times e^{−x} above and below:
+    (1 + e^{−2x} + (2 + m² sinh²α) e^{−x}) / (1 − e^{−2x} − m sinh2α e^{−x})."""
+    numerator = 2.0 * e1 * e1 + e1 * (2.0 + m * m * sinh_a2 + m * sinh_2a)
+    denominator = 1.0 - e1 * e1 - m * sinh_2a * e1
+    return numerator, denominator
+
+
+def _summed(delta_over_r, bracket, tolerance, max_terms):
     ratios = np.atleast_1d(np.asarray(delta_over_r, dtype=float))
     if np.any(ratios <= 0.0):
         raise ValueError("Brenner's series needs a gap δ/r > 0")
-    out = np.array([_brenner_one(x, tolerance, max_terms) for x in ratios])
+    out = np.array([_series(x, bracket, tolerance, max_terms) for x in ratios])
     return out if np.ndim(delta_over_r) else float(out[0])
 
 
-def _brenner_one(ratio, tolerance, max_terms):
+def _series(ratio, bracket, tolerance, max_terms):
+    """(4/3) sinh α Σ_{n≥1} n(n+1)/((2n−1)(2n+3)) · bracket_n, α = arccosh(1 + δ/r)."""
     alpha = math.acosh(1.0 + ratio)
     sinh_2a = math.sinh(2.0 * alpha)
     sinh_a2 = math.sinh(alpha) ** 2
     total = 0.0
     for n in range(1, max_terms + 1):
         m = 2 * n + 1
-        e1 = math.exp(-m * alpha)  # e^{−x}
-        # bracket = (2 sinh x + m sinh 2α) / (2 cosh x − 2 − m² sinh²α) − 1, times e^x above
-        # and below: (1 − e^{−2x} + m sinh2α e^{−x}) / (1 + e^{−2x} − 2e^{−x} − m² sinh²α e^{−x}).
-        numerator = 2.0 * e1 - 2.0 * e1 * e1 + e1 * (m * sinh_2a + m * m * sinh_a2)
-        denominator = 1.0 + e1 * e1 - 2.0 * e1 - m * m * sinh_a2 * e1
+        numerator, denominator = bracket(m, math.exp(-m * alpha), sinh_2a, sinh_a2)
         term = n * (n + 1) / ((2 * n - 1) * (2 * n + 3)) * numerator / denominator
         total += term
         if abs(term) < tolerance * abs(total) and m * alpha > 10.0:
@@ -100,24 +132,35 @@ def approach_history(run_dir):
     p = run_parameters(run_dir)
     body = io.read_particles(run_dir)
     body = body[min(body)]
-    names = "xyz"[: 3 if "z" in body else 2]
-    name = names[p["axis"]]
+    name = axis_name(body, p["axis"])
     keep = body["time"] > 0.0
-    centre = body[name][keep]
-    gap = (centre - p["wall"]) * -p["direction"] - p["radius"]  # δ, positive while apart
-    drag = 6.0 * math.pi * p["viscosity"] * p["radius"] * p["speed"]
-    step = p["speed"] * p["dt"]
-    against = -p["direction"]  # the force resisting the motion is along −Û
+    gap = (body[name][keep] - p["wall"]) * -p["direction"] - p["radius"]  # δ, positive while apart
+    h = force_parts(body, name, p["direction"], gap, p["speed"] * p["dt"],
+                    6.0 * math.pi * p["viscosity"] * p["radius"] * p["speed"])
+    h.update({"gap": gap / p["radius"], "hydro_gap": h["hydro_gap"] / p["radius"],
+              "lub_gap": h["lub_gap"] / p["radius"], "parameters": p})
+    return h
+
+
+def axis_name(body, axis):
+    """The particles.csv column of the coordinate along `axis` (x, y or z)."""
+    return "xyz"[: 3 if "z" in body else 2][axis]
+
+
+def force_parts(body, name, direction, gap, closure, drag):
+    """κ of one body's rows after t = 0 (particles.csv columns `body`, moving along the axis
+    `name` in `direction` ±1) whose gaps at the end of the steps are `gap`, closing by `closure`
+    per step: κ_hydro = the resolved force against the motion (f*) / `drag` at the gap where
+    the step began, gap + closure; κ_lub = the lubrication correction (lubrication_f*) /
+    `drag` at mid-step, gap + closure/2 (the gaps in the units of `gap`)."""
+    keep = body["time"] > 0.0
+    against = -direction  # the force resisting the motion is along −Û
     lubrication = body.get(f"lubrication_f{name}", np.zeros_like(body[f"f{name}"]))
-    return {"gap": gap / p["radius"],
-            "hydro_gap": (gap + step) / p["radius"],
-            "kappa_hydro": against * body[f"f{name}"][keep] / drag,
-            "lub_gap": (gap + 0.5 * step) / p["radius"],
-            "kappa_lub": against * lubrication[keep] / drag,
-            "parameters": p}
+    return {"hydro_gap": gap + closure, "kappa_hydro": against * body[f"f{name}"][keep] / drag,
+            "lub_gap": gap + 0.5 * closure, "kappa_lub": against * lubrication[keep] / drag}
 
 
-def _interpolate_log(x, xs, ys):
+def interpolate_log(x, xs, ys):
     """ys(xs) at x, linear in ln δ; NaN outside the covered gaps."""
     order = np.argsort(xs)
     lx = np.log(np.asarray(xs)[order])
@@ -125,23 +168,31 @@ def _interpolate_log(x, xs, ys):
     return out
 
 
-def kappa_at(run_dir, ratios=TABLE_RATIOS):
-    """κ_hydro, κ_lub, their sum and Brenner's at the gaps `ratios` (δ/r) the run covered (NaN
-    where it did not), and the ratios total/Brenner and hydro/Brenner, as a dict of arrays."""
-    h = approach_history(run_dir)
+def kappa_table(history, exact, ratios):
+    """A history's (approach_history()) κ_hydro and κ_lub, each interpolated in ln gap from its
+    own gaps onto `ratios`, their sum and the exact κ = exact(ratios), with the ratios
+    total/exact and hydro/exact; NaN where the run did not reach. A dict of arrays."""
     x = np.asarray(ratios, dtype=float)
-    hydro = _interpolate_log(x, h["hydro_gap"], h["kappa_hydro"])
-    lub = _interpolate_log(x, h["lub_gap"], h["kappa_lub"])
-    brenner = brenner_kappa(x)
+    hydro = interpolate_log(x, history["hydro_gap"], history["kappa_hydro"])
+    lub = interpolate_log(x, history["lub_gap"], history["kappa_lub"])
+    reference = exact(x)
     total = hydro + lub
-    return {"delta_over_r": x, "hydro": hydro, "lubrication": lub, "total": total,
-            "brenner": brenner, "ratio": total / brenner, "hydro_ratio": hydro / brenner}
+    return {"gap_over_r": x, "hydro": hydro, "lubrication": lub, "total": total,
+            "exact": reference, "ratio": total / reference, "hydro_ratio": hydro / reference}
+
+
+def kappa_at(run_dir, ratios=TABLE_RATIOS):
+    """kappa_table() of the run against Brenner at the gaps `ratios` (δ/r); also under the
+    names delta_over_r and brenner."""
+    r = kappa_table(approach_history(run_dir), brenner_kappa, ratios)
+    r.update({"delta_over_r": r["gap_over_r"], "brenner": r["exact"]})
+    return r
 
 
 def deviation(result, window=(0.1, 2.0)):
-    """The largest |κ/κ_Brenner − 1| (signed) of kappa_at()'s result over the gaps in `window`
+    """The largest |κ/κ_exact − 1| (signed) of a kappa_table() result over the gaps in `window`
     that the run covered, and where."""
-    x = result["delta_over_r"]
+    x = result["gap_over_r"]
     inside = (x >= window[0]) & (x <= window[1]) & np.isfinite(result["ratio"])
     if not np.any(inside):
         raise ValueError(f"the run covers no compared gap in δ/r {window}")
@@ -151,20 +202,44 @@ def deviation(result, window=(0.1, 2.0)):
             "points": int(np.count_nonzero(inside))}
 
 
+def per_row(history, exact):
+    """Each row's κ at the gap its resolved force belongs to (the start of the step): that gap,
+    κ_hydro, the total (κ_lub interpolated onto it; 0 where the run has none yet) and the exact
+    κ = exact(gap)."""
+    gap = history["hydro_gap"]
+    lub = interpolate_log(gap, history["lub_gap"], history["kappa_lub"])
+    total = history["kappa_hydro"] + np.where(np.isfinite(lub), lub, 0.0)
+    return {"gap": gap, "hydro": history["kappa_hydro"], "total": total, "exact": exact(gap)}
+
+
+def table_lines(result, label, window=(0.1, 2.0), gap_name="δ/r", exact_name="Brenner"):
+    """A kappa_table() result as text lines: the largest deviation of the total over `window`,
+    then per gap κ_hydro, κ_lub, the total, the exact κ, total/exact, hydro/exact and
+    exact − κ_lub (what the correction assumes the grid resolves, to set beside κ_hydro)."""
+    worst = deviation(result, window)
+    lines = [f"{label}: largest deviation of the total over {window[0]:g} <= {gap_name} <= "
+             f"{window[1]:g}: {100 * worst['max']:+.1f} % at {gap_name} = {worst['max_at']:g}",
+             f"  {gap_name:>5s} {'κ_hydro':>8s} {'κ_lub':>8s} {'κ_total':>8s} {exact_name:>8s} "
+             f"{'total/ex':>8s} {'hydro/ex':>8s} {'ex − lub':>8s}"]
+    for k, x in enumerate(result["gap_over_r"]):
+        cells = [result[name][k] for name in ("hydro", "lubrication", "total", "exact", "ratio",
+                                              "hydro_ratio")]
+        cells.append(result["exact"][k] - result["lubrication"][k])
+        lines.append(f"  {x:5.2f} " + " ".join("     n/a" if not np.isfinite(c) else f"{c:8.4f}"
+                                               for c in cells))
+    return lines
+
+
 def plot(axes, run_dirs, labels=None):
     """κ/κ_Brenner against δ/r of every run: the total (solid) and the resolved part alone
-    (dashed, where the lubrication is on), the range h_Δ of each run marked."""
+    (dashed, where the lubrication is on)."""
     labels = labels or [os.path.basename(os.path.normpath(r)) for r in run_dirs]
     for run, label in zip(run_dirs, labels):
         h = approach_history(run)
-        hydro_ratio = h["kappa_hydro"] / brenner_kappa(h["hydro_gap"])
-        lub = _interpolate_log(h["hydro_gap"], h["lub_gap"], h["kappa_lub"])
-        lub = np.where(np.isfinite(lub), lub, 0.0)
-        total_ratio = (h["kappa_hydro"] + lub) / brenner_kappa(h["hydro_gap"])
-        (line,) = axes.plot(h["hydro_gap"], total_ratio, label=f"fddem {label}")
-        p = h["parameters"]
-        if p["range"] is not None:
-            axes.plot(h["hydro_gap"], hydro_ratio, "--", color=line.get_color(), lw=1,
+        row = per_row(h, brenner_kappa)
+        (line,) = axes.plot(row["gap"], row["total"] / row["exact"], label=f"fddem {label}")
+        if h["parameters"]["range"] is not None:
+            axes.plot(row["gap"], row["hydro"] / row["exact"], "--", color=line.get_color(), lw=1,
                       label=f"{label}: resolved part")
     axes.axhline(1.0, color="k", lw=1, label=LABEL)
     axes.axhspan(0.9, 1.1, color="0.92", zorder=0)

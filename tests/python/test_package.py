@@ -23,7 +23,7 @@ sys.path.insert(0, HERE)
 
 import fddem  # noqa: E402
 from fddem import heavy_disk, impulsive_cylinder, io, rebound, shedding, slices  # noqa: E402
-from fddem import sphere_wake, sphere_wall, ten_cate  # noqa: E402
+from fddem import sphere_wake, sphere_wall, ten_cate, two_spheres  # noqa: E402
 from synthetic_run import make_run, velocity_field, write_pvd  # noqa: E402
 from synthetic_run import write_split_bodies, write_split_frame  # noqa: E402
 
@@ -628,6 +628,107 @@ class SphereWall(unittest.TestCase):
         self.assertTrue(np.all(np.isnan(r["total"][2:])))
         self.assertAlmostEqual(worst["max"], 0.1, delta=1e-3)
         self.assertEqual(worst["points"], 2)
+
+
+class TwoSpheres(unittest.TestCase):
+    """tools/compare_sphere_wall.py on two spheres: the free-plane series (two equal spheres
+    closing head-on) against its three limits and its 40-digit table, and κ of a two-sphere run
+    per sphere."""
+
+    def test_free_plane_series_meets_its_limits(self):
+        # The 40-digit sums of cases/validation/rebound_stokes/two_spheres_free_surface.md
+        # (seven significant digits printed), at δ/r = g/(2r).
+        table = {2: 1.330154, 1: 1.596682, 0.5: 2.038655, 0.2: 3.104591, 0.1: 4.625543,
+                 0.05: 7.413298, 0.02: 15.308654}
+        for delta, kappa in table.items():
+            self.assertAlmostEqual(two_spheres.exact_kappa(2 * delta) / kappa, 1.0, delta=1e-6)
+        # Near contact, the leading term r/(2g) = r/(4δ) (Reynolds' film between two spheres of
+        # reduced radius r/2): κ·2g/r → 1, the rest being (9/20) ln(r/g) + C, O(g ln g) in all.
+        g = np.array([2e-3, 2e-4, 2e-5])
+        kappa = two_spheres.exact_kappa(g)
+        self.assertAlmostEqual(kappa[2] * 2 * g[2], 1.0, delta=3e-4)  # 1 + 2g · 6.2
+        # The log term (9/20, Jeffrey & Onishi 1984's g2 = 9/40 doubled): with it, the rest
+        # settles to a constant (a wrong coefficient would move it by Δ·ln 10 per decade).
+        rest = kappa - 0.5 / g - 0.45 * np.log(1 / g)
+        self.assertLess(abs(rest[1] - rest[2]), 2e-4)
+        self.assertLess(abs(rest[0] - rest[1]), 2e-3)
+        self.assertAlmostEqual(rest[2], two_spheres.NEAR_CONTACT_CONSTANT, delta=2e-4)
+        # The note: within 0.1 % for δ/r ≤ 0.02.
+        self.assertAlmostEqual(two_spheres.near_contact_kappa(0.04) / two_spheres.exact_kappa(0.04),
+                               1.0, delta=1e-3)
+        # Far apart, the other sphere's Stokeslet: 1 + (3/4)x + (9/16)x², x = r/H, to O(x³).
+        for delta in (99.0, 999.0):
+            x = 1.0 / (1.0 + delta)
+            self.assertAlmostEqual(two_spheres.exact_kappa(2 * delta),
+                                   two_spheres.far_field_kappa(2 * delta), delta=2 * x**3)
+        with self.assertRaises(ValueError):
+            two_spheres.exact_kappa(0.0)
+
+    def write_run(self, directory, hydro_share, second_scale=1.0):
+        # Spheres r = 0.25 closing at ±0.3 along y in μ = 2 (not the case's axis, units or
+        # order): id 0 above moving down, id 1 below moving up, from g/r = 6. Each one's
+        # resolved force a share of the exact at the step's starting gap, the lubrication the
+        # rest at mid-step; the second sphere's resolved force times `second_scale`.
+        radius, speed, mu, dt = 0.25, 0.3, 2.0, 0.002
+        with open(os.path.join(directory, "case.toml"), "w") as f:
+            f.write(f"[domain]\nsize = [2.0, 4.0, 2.0]\ncells = [16, 32, 16]\n\n"
+                    f"[fluid]\nviscosity = {mu}\n\n[time]\ndt = {dt}\n\n"
+                    f"[lubrication]\nenabled = true\n\n")
+            for y, v in ((2.0 + 4 * radius, -speed), (2.0 - 4 * radius, speed)):
+                f.write(f"[[bodies]]\ndiameter = {2 * radius}\nposition = [1.0, {y}, 1.0]\n"
+                        f"velocity = [0.0, {v}, 0.0]\n\n")
+        drag = 6.0 * np.pi * mu * radius * speed
+        columns = ["time", "id", "x", "y", "z", "v", "fy", "lubrication_fy"]
+        with open(os.path.join(directory, "particles.csv"), "w") as f:
+            f.write(",".join(columns) + "\n")
+            for n in range(0, 1240):
+                t = n * dt
+                gap = 6 * radius - 2 * speed * t
+                for body, sign, scale in ((0, 1.0, 1.0), (1, -1.0, second_scale)):
+                    y = 2.0 + sign * (radius + 0.5 * gap)
+                    fy = fl = 0.0
+                    if n > 0:
+                        fy = sign * scale * hydro_share * drag * two_spheres.exact_kappa(
+                            (gap + 2 * speed * dt) / radius)
+                        fl = sign * (1 - hydro_share) * drag * two_spheres.exact_kappa(
+                            (gap + speed * dt) / radius)
+                    row = [t, body, 1.0, y, 1.0, -sign * speed, fy, fl]
+                    f.write(",".join(repr(float(v)) for v in row) + "\n")
+
+    def test_each_sphere_is_compared_at_its_own_gaps(self):
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_run(directory, 0.7)
+            results = two_spheres.kappa_at(directory)
+            symmetry = two_spheres.asymmetry(directory)
+            worst = [sphere_wall.deviation(r) for r in results]
+        # g/r from 6 to 6 − 1239 · 0.0048 = 0.053: every table gap. Linear interpolation in
+        # ln g of κ ~ r/(2g) sampled every 0.0048 r: 5e-4 at g/r = 0.07.
+        for r, w in zip(results, worst):
+            np.testing.assert_allclose(r["ratio"], 1.0, atol=1e-3)
+            np.testing.assert_allclose(r["hydro_ratio"], 0.7, atol=1e-3)
+            self.assertLess(abs(w["max"]), 1e-3)
+            self.assertEqual(w["points"], 8)  # g/r = 2, 1, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1
+        self.assertLess(symmetry["hydro"], 1e-12)
+        self.assertLess(symmetry["lubrication"], 1e-12)
+
+    def test_an_unequal_pair_shows_in_the_asymmetry(self):
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_run(directory, 0.7, second_scale=1.01)
+            symmetry = two_spheres.asymmetry(directory)
+        self.assertAlmostEqual(symmetry["hydro"], 0.01 / 1.005, delta=1e-9)
+        self.assertLess(symmetry["lubrication"], 1e-12)
+
+    def test_the_compare_tool_prints_both_spheres_and_draws_them(self):
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_run(directory, 0.7)
+            png = os.path.join(directory, "two.png")
+            tool = os.path.join(ROOT, "tools", "compare_sphere_wall.py")
+            result = subprocess.run([sys.executable, tool, directory, "-o", png],
+                                    capture_output=True, text=True)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("sphere 0", result.stdout)
+            self.assertIn("sphere 1", result.stdout)
+            self.assertGreater(pixel_variance(png), MIN_PIXEL_VARIANCE)
 
 
 def write_bounce_run(directory, t, gap, w, diameter, floor):

@@ -8,7 +8,12 @@ two_spheres_free_surface.md). The free-surface case equals two equal spheres app
 with speeds U and -U (the mid-plane is shear-free with zero normal velocity), delta = half the gap.
 
 Run: /usr/bin/python3 free_surface_series.py   (prints the table and the limit checks; exits 1 on failure)
+
+The same two series in double precision, as fddem's comparisons use them, are
+python/fddem/sphere_wall.py (brenner_kappa, free_plane_kappa; written with e^{-x} so that no
+sinh overflows): the last check holds them to these 40-digit sums.
 """
+import os
 import sys
 
 from mpmath import acosh, cosh, log, mp, mpf, sinh
@@ -57,6 +62,16 @@ def main():
     # rigid wall against the tabulated values of ../shared/reference/sphere_wall.md
     for d, k in [(0.4, 3.73562), (0.1, 11.4592), (0.01, 101.896)]:
         ok &= abs(float(kappa(d, "wall")[0]) - k) < 6e-5 * k
+    # the package's double-precision sums against these
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "python"))
+    from fddem.sphere_wall import brenner_kappa, free_plane_kappa
+
+    worst = max(abs(summed(d) / float(kappa(d, plane)[0]) - 1)
+                for d in (2, 1, 0.5, 0.2, 0.1, 0.05, 0.02)
+                for plane, summed in (("free", free_plane_kappa), ("wall", brenner_kappa)))
+    print(f"python/fddem/sphere_wall.py against these sums: largest relative difference "
+          f"{worst:.1e}")
+    ok &= worst < 1e-12
     print("checks", "passed" if ok else "FAILED")
     return 0 if ok else 1
 
