@@ -6,6 +6,7 @@
 #include <mpi.h>
 
 #include <cstdlib>
+#include <string_view>
 
 #if defined(__SANITIZE_ADDRESS__)
 #include <sanitizer/lsan_interface.h>
@@ -54,15 +55,23 @@ int without_leak_checks(Call call)
 
 } // namespace
 
-bool is_started_by_mpi_launcher()
+bool is_started_among_several(const std::function<const char*(const char*)>& variable)
 {
-    // Open MPI, MPICH/Hydra and PMIx-based launchers, Slurm.
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_NTASKS"}) {
-        if (std::getenv(name) != nullptr) {
-            return true;
+    // Open MPI, MPICH/Hydra and Slurm give the world's size: start MPI unless it is one.
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "SLURM_NTASKS"}) {
+        if (const char* size = variable(name); size != nullptr) {
+            return std::string_view(size) != "1";
         }
     }
-    return false;
+    // A PMIx launcher that gives only the rank: the size is known after MPI_Init.
+    return variable("PMIX_RANK") != nullptr;
+}
+
+bool is_started_by_mpi_launcher()
+{
+    return is_started_among_several([](const char* name) -> const char* {
+        return std::getenv(name); // NOLINT(concurrency-mt-unsafe): before any thread starts
+    });
 }
 
 void ensure_mpi_started()
