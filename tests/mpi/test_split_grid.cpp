@@ -33,6 +33,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "support/split_compare.hpp"
 #include "support/storage_sums.hpp"
 
 namespace fddem {
@@ -84,16 +85,6 @@ std::vector<Index<Dim>> layouts(int n)
     std::sort(result.begin(), result.end());
     result.erase(std::unique(result.begin(), result.end()), result.end());
     return result;
-}
-
-template <int Dim>
-std::array<bool, Dim> periodic_from(int code)
-{
-    std::array<bool, Dim> periodic{};
-    for (int d = 0; d < Dim; ++d) {
-        periodic[ax(d)] = ((code >> d) & 1) != 0;
-    }
-    return periodic;
 }
 
 template <int Dim>
@@ -269,7 +260,7 @@ TYPED_TEST(SplitGridTest, FillGivesEveryEntryItsOneProcessValue)
     const int n_ranks = Communicator::world().size();
     for (const Index<Dim>& ranks : layouts<Dim>(n_ranks)) {
         for (int code = 0; code < (1 << Dim); ++code) {
-            const auto periodic = periodic_from<Dim>(code);
+            const auto periodic = test::periodic_from<Dim>(code);
             SCOPED_TRACE(describe<Dim>(ranks, periodic));
             const GridPair<Dim> g = make_grids<Dim>(ranks, periodic);
             for (int kind = -1; kind < Dim; ++kind) {
@@ -295,7 +286,7 @@ TYPED_TEST(SplitGridTest, AccumulateIsTheAdjointOfFillOverAllRanks)
     std::uniform_int_distribution<int> value(-20, 20);
     for (const Index<Dim>& ranks : layouts<Dim>(world.size())) {
         for (int code = 0; code < (1 << Dim); ++code) {
-            const auto periodic = periodic_from<Dim>(code);
+            const auto periodic = test::periodic_from<Dim>(code);
             SCOPED_TRACE(describe<Dim>(ranks, periodic));
             const GridPair<Dim> g = make_grids<Dim>(ranks, periodic);
             const HaloExchange<Dim> halo(g.split);
@@ -366,7 +357,7 @@ TYPED_TEST(SplitGridTest, MarkersSpreadAndInterpolatedByTheirOwnersMatchOneProce
     const Communicator world = Communicator::world();
     for (const Index<Dim>& ranks : layouts<Dim>(world.size())) {
         for (int code = 0; code < (1 << Dim); ++code) {
-            const auto periodic = periodic_from<Dim>(code);
+            const auto periodic = test::periodic_from<Dim>(code);
             SCOPED_TRACE(describe<Dim>(ranks, periodic));
             const GridPair<Dim> g = make_grids<Dim>(ranks, periodic);
             const std::vector<Vec<Dim>> points = markers<Dim>(g.whole, ranks);

@@ -21,6 +21,8 @@
 #include <utility>
 #include <vector>
 
+#include "support/split_compare.hpp"
+
 namespace fddem {
 namespace {
 
@@ -51,17 +53,6 @@ double source(const Index<Dim>& c)
     return std::sin(phase) + 0.3 * std::cos(0.21 * phase * phase);
 }
 
-/// The axes whose bit is set in `code` are periodic.
-template <int Dim>
-std::array<bool, Dim> periodic_axes(int code)
-{
-    std::array<bool, Dim> periodic{};
-    for (int d = 0; d < Dim; ++d) {
-        periodic[static_cast<std::size_t>(d)] = ((code >> d) & 1) != 0;
-    }
-    return periodic;
-}
-
 /// A box of unequal sides, so that the axes are not interchangeable.
 template <int Dim>
 Vec<Dim> box_lengths()
@@ -90,28 +81,13 @@ solve_source(const MacGrid<Dim>& grid, const std::array<bool, Dim>& periodic,
     return solver;
 }
 
-/// The largest |a − b| over the cells `owned` (this rank's) of all ranks (`a` and `b` on grids
-/// that hold those cells), and the largest |b| there.
-template <int Dim>
-std::pair<double, double> largest_difference(const Communicator& world, const Box<Dim>& owned,
-                                             const CellField<Dim>& a, const CellField<Dim>& b)
-{
-    double worst = 0.0;
-    double largest = 0.0;
-    for_each_cell_in_vtk_order(owned, [&](const Index<Dim>& c) {
-        worst = std::max(worst, std::abs(a(c) - b(c)));
-        largest = std::max(largest, std::abs(b(c)));
-    });
-    return {world.max(worst), world.max(largest)};
-}
-
 TYPED_TEST(SplitPoissonTest, HypreOnTheBlocksGivesTheOneProcessSolution)
 {
     constexpr int Dim = TypeParam::value;
     const Communicator world = Communicator::world();
     const Index<Dim> cells = poisson_cells<Dim>();
     for (int code : {0, 1, (1 << Dim) - 1}) {
-        const std::array<bool, Dim> periodic = periodic_axes<Dim>(code);
+        const std::array<bool, Dim> periodic = test::periodic_from<Dim>(code);
         SCOPED_TRACE("periodic code " + std::to_string(code));
         const Vec<Dim> origin = Vec<Dim>::Zero();
         const Vec<Dim> length = box_lengths<Dim>();
@@ -129,7 +105,7 @@ TYPED_TEST(SplitPoissonTest, HypreOnTheBlocksGivesTheOneProcessSolution)
         CellField<Dim> phi_split(split);
         const auto solver_split = solve_source<Dim>(split, periodic, settings, phi_split);
         const auto [worst, largest] =
-            largest_difference<Dim>(world, split.owned_cells(), phi_split, phi_whole);
+            test::compare_owned<Dim>(world, split.owned_cells(), phi_split, phi_whole);
         EXPECT_GT(largest, 1e-3);
         EXPECT_LE(worst, 1e-9 * largest)
             << "iterations: one process " << solver_whole->last_iterations() << ", split "
@@ -176,7 +152,7 @@ TYPED_TEST(SplitPoissonTest, FftwMpiOnSlabsGivesTheOneProcessFftSolution)
     const Communicator world = Communicator::world();
     const Index<Dim> cells = poisson_cells<Dim>();
     for (int code : {0, 1, (1 << Dim) - 1}) {
-        const std::array<bool, Dim> periodic = periodic_axes<Dim>(code);
+        const std::array<bool, Dim> periodic = test::periodic_from<Dim>(code);
         const Vec<Dim> origin = Vec<Dim>::Zero();
         const Vec<Dim> length = box_lengths<Dim>();
         const MacGrid<Dim> whole(cells, origin, length, periodic);
@@ -185,7 +161,7 @@ TYPED_TEST(SplitPoissonTest, FftwMpiOnSlabsGivesTheOneProcessFftSolution)
         CellField<Dim> phi_whole(whole);
         static_cast<void>(solve_source<Dim>(whole, periodic, settings, phi_whole));
         const double largest =
-            largest_difference<Dim>(world, whole.owned_cells(), phi_whole, phi_whole).second;
+            test::compare_owned<Dim>(world, whole.owned_cells(), phi_whole, phi_whole).second;
         ASSERT_GT(largest, 1e-3);
 
         for (const Index<Dim>& ranks : fft_layouts<Dim>(cells, world.size())) {
@@ -203,7 +179,7 @@ TYPED_TEST(SplitPoissonTest, FftwMpiOnSlabsGivesTheOneProcessFftSolution)
                 EXPECT_EQ(solver_split->name(), "FFTW-MPI direct (slabs)");
             }
             const double worst =
-                largest_difference<Dim>(world, split.owned_cells(), phi_split, phi_whole).first;
+                test::compare_owned<Dim>(world, split.owned_cells(), phi_split, phi_whole).first;
             EXPECT_LE(worst, 1e-13 * largest);
             if (world.rank() == 0) {
                 std::printf("[ info ] %dD periodic code %d, layout %son %d ranks: FFTW-MPI "
@@ -235,7 +211,7 @@ TYPED_TEST(SplitPoissonTest, FftwMpiAndHypreAgreeOnTheSameSplitGrid)
     CellField<Dim> phi_hypre(split);
     static_cast<void>(solve_source<Dim>(split, periodic, settings, phi_hypre));
     const auto [worst, largest] =
-        largest_difference<Dim>(world, split.owned_cells(), phi_hypre, phi_fft);
+        test::compare_owned<Dim>(world, split.owned_cells(), phi_hypre, phi_fft);
     EXPECT_GT(largest, 1e-3);
     EXPECT_LE(worst, 1e-9 * largest);
 }

@@ -14,6 +14,18 @@
 
 namespace fddem::test {
 
+/// The axes whose bit is set in `code` are periodic (bit d: axis d), for tests that go over
+/// every combination.
+template <int Dim>
+std::array<bool, Dim> periodic_from(int code)
+{
+    std::array<bool, Dim> periodic{};
+    for (int d = 0; d < Dim; ++d) {
+        periodic[static_cast<std::size_t>(d)] = ((code >> d) & 1) != 0;
+    }
+    return periodic;
+}
+
 /// The largest |split − whole| over the entries `owned` of each rank, and the largest |whole|
 /// there, both over all ranks of `world`.
 template <int Dim>
