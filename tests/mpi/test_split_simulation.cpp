@@ -110,6 +110,14 @@ TEST(SplitSimulation, DisksAcrossRankFacesCollidingMatchOneProcess)
     expect_split_case_matches<2>("disks.toml", "2D disks");
 }
 
+TEST(SplitSimulation, DisksCollidingSweptTogetherMatchOneProcess)
+{
+    // coupling.body_sweep = "simultaneous": one sum over the ranks and one halo exchange per
+    // outer iteration for all the bodies, instead of one of each per body.
+    expect_split_case_matches<2>("disks.toml", "2D disks, simultaneous sweep",
+                                 {"coupling.body_sweep=simultaneous"});
+}
+
 TEST(SplitSimulation, TheLayoutOfParallelRanksIsTakenAndChecked)
 {
     const Communicator world = Communicator::world();
@@ -144,6 +152,12 @@ TEST(SplitSimulation, TheLayoutOfParallelRanksIsTakenAndChecked)
 TEST(SplitSimulation, SpheresAcrossRankFacesCollidingMatchOneProcess)
 {
     expect_split_case_matches<3>("spheres.toml", "3D spheres");
+}
+
+TEST(SplitSimulation, SpheresCollidingSweptTogetherMatchOneProcess)
+{
+    expect_split_case_matches<3>("spheres.toml", "3D spheres, simultaneous sweep",
+                                 {"coupling.body_sweep=simultaneous"});
 }
 
 } // namespace

@@ -84,12 +84,14 @@ bool reaches_wall(const MacGrid<Dim>& grid, const Vec<Dim>& x)
     return false;
 }
 
+/// Eqs. (13)–(15) of one body from its markers' I(u) (c.fluid): the markers off at walls, the
+/// new motion and λ, and coupling.forcing_change. Arithmetic on the body's own record only, the
+/// same on every rank. Returns the rigid-motion defect; `motion` receives U^{n+1}, ω^{n+1}.
 template <int Dim, class Kernel>
-double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
-                  FaceField<Dim>& u)
+double correct_forcing(Particle<Dim>& body, const MacGrid<Dim>& grid,
+                       const RigidUpdateSettings<Dim>& s, RigidVelocity<Dim>& motion)
 {
     MarkerCoupling<Dim>& c = body.coupling;
-    interpolate_at_markers<Dim, Kernel>(grid, u, c); // I(u)
     std::vector<char> is_off(s.is_wall_marker_off ? c.markers.size() : 0, 0);
     for (std::size_t l = 0; l < is_off.size(); ++l) {
         if (reaches_wall<Dim, Kernel>(grid, c.positions[l])) {
@@ -101,7 +103,7 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
             c.lambda_star[l] = Vec<Dim>::Zero();
         }
     }
-    const RigidVelocity<Dim> motion = new_motion(body, s);
+    motion = new_motion(body, s);
     const double defect = update_marker_force<Dim>(motion, c.offsets, c.fluid, c.lambda_star, s.dt,
                                                    c.lambda); // eq. (15)
     for (std::size_t l = 0; l < is_off.size(); ++l) {
@@ -111,13 +113,17 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
     }
     c.forcing_change = forcing_change<Dim>(c.offsets, c.markers.volumes, c.lambda, c.lambda_star,
                                            s.dt, body.volume(), body.radius());
-    // eq. (16): u ← u + Δt D(λ − λ*). Across a periodic side the ghosts collect what belongs
-    // to the faces on the other side (zeroed first, then accumulated onto their owners) and are
-    // filled again, so that the next body's I(u) reads this body's correction there as well.
-    const HaloExchange<Dim> halo(grid);
-    // On a split grid each marker is spread by its owner only, into its block and halo; the
-    // accumulation then adds the halo's share to the neighbours' faces.
-    halo.zero_ghosts(u);
+    return defect;
+}
+
+/// Eq. (16)'s D(λ − λ*) of one body into `u`, owned markers only: on a split grid each marker is
+/// spread by the rank that owns its cell, into its block and halo. The caller zeroes the ghosts
+/// before and accumulates them after.
+template <int Dim, class Kernel>
+void spread_correction(const Particle<Dim>& body, const MacGrid<Dim>& grid,
+                       const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
+{
+    const MarkerCoupling<Dim>& c = body.coupling;
     for (std::size_t l = 0; l < c.markers.size(); ++l) {
         if (!grid.owns_point(c.positions[l])) {
             continue;
@@ -125,11 +131,91 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
         spread_vector<Dim, Kernel>(grid, u, c.positions[l], s.dt * (c.lambda[l] - c.lambda_star[l]),
                                    c.markers.volumes[l]);
     }
-    halo.accumulate(u);
-    halo.fill(u);
-    c.lambda_star = c.lambda; // λ* ← λ
+}
+
+/// The end of a body's update: λ* ← λ, and U, ω take their new values.
+template <int Dim>
+void finish_update(Particle<Dim>& body, const RigidVelocity<Dim>& motion)
+{
+    body.coupling.lambda_star = body.coupling.lambda;
     body.velocity = motion.velocity;
     body.omega = motion.omega;
+}
+
+/// coupling.body_sweep = "sequential": one body after the other, each reading the fluid as the
+/// bodies before it left it (a Gauss–Seidel sweep over the bodies). Per body: one sum over the
+/// ranks and one reverse halo sum and fill.
+template <int Dim, class Kernel>
+double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
+                  FaceField<Dim>& u)
+{
+    interpolate_at_markers<Dim, Kernel>(grid, u, body.coupling); // I(u)
+    RigidVelocity<Dim> motion;
+    const double defect = correct_forcing<Dim, Kernel>(body, grid, s, motion);
+    // eq. (16): u ← u + Δt D(λ − λ*). Across a periodic side the ghosts collect what belongs
+    // to the faces on the other side (zeroed first, then accumulated onto their owners) and are
+    // filled again, so that the next body's I(u) reads this body's correction there as well.
+    // On a split grid the accumulation adds the halo's share to the neighbours' faces.
+    const HaloExchange<Dim> halo(grid);
+    halo.zero_ghosts(u);
+    spread_correction<Dim, Kernel>(body, grid, s, u);
+    halo.accumulate(u);
+    halo.fill(u);
+    finish_update(body, motion);
+    return defect;
+}
+
+/// coupling.body_sweep = "simultaneous": every body reads the same u, and the corrections of all
+/// of them are added together (a Jacobi sweep over the bodies; eq. (16) with D over every
+/// marker at once, as the paper writes it). One sum over the ranks for all the bodies' I(u),
+/// and one reverse halo sum and fill, whatever the number of bodies. Bodies whose kernel
+/// supports do not meet get exactly what the sequential sweep gives them; where they meet, the
+/// two sweeps reach the same converged λ by different paths.
+template <int Dim, class Kernel>
+double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                          const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
+{
+    std::size_t values = 0;
+    for (Particle<Dim>& body : bodies) {
+        MarkerCoupling<Dim>& c = body.coupling;
+        for (std::size_t l = 0; l < c.markers.size(); ++l) {
+            c.fluid[l] = grid.owns_point(c.positions[l])
+                             ? interpolate_velocity<Dim, Kernel>(grid, u, c.positions[l])
+                             : Vec<Dim>::Zero();
+        }
+        values += c.markers.size() * Dim;
+    }
+    if (grid.communicator().size() > 1) {
+        // One message for every marker of every body (x + 0 = x, as in interpolate_at_markers).
+        std::vector<double> all;
+        all.reserve(values);
+        for (Particle<Dim>& body : bodies) {
+            const std::span<double> v = flat_values<Dim>(body.coupling.fluid);
+            all.insert(all.end(), v.begin(), v.end());
+        }
+        grid.communicator().sum(std::span<double>(all));
+        std::size_t next = 0;
+        for (Particle<Dim>& body : bodies) {
+            const std::span<double> v = flat_values<Dim>(body.coupling.fluid);
+            std::copy_n(all.begin() + static_cast<std::ptrdiff_t>(next), v.size(), v.begin());
+            next += v.size();
+        }
+    }
+    double defect = 0.0;
+    std::vector<RigidVelocity<Dim>> motions(bodies.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        defect = std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], grid, s, motions[b]));
+    }
+    const HaloExchange<Dim> halo(grid);
+    halo.zero_ghosts(u);
+    for (const Particle<Dim>& body : bodies) {
+        spread_correction<Dim, Kernel>(body, grid, s, u); // eq. (16), all markers
+    }
+    halo.accumulate(u);
+    halo.fill(u);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        finish_update(bodies[b], motions[b]);
+    }
     return defect;
 }
 
@@ -143,6 +229,10 @@ double update_rigid_bodies(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& 
     double defect = 0.0;
     std::visit(
         [&](auto k) {
+            if (settings.is_simultaneous) {
+                defect = update_all_at_once<Dim, decltype(k)>(bodies, grid, settings, u);
+                return;
+            }
             for (Particle<Dim>& body : bodies) {
                 defect = std::max(defect, update_one<Dim, decltype(k)>(body, grid, settings, u));
             }

@@ -40,9 +40,14 @@ struct RigidUpdateSettings {
     /// coupling.markers_off_at_walls: markers whose kernel support reaches a wall of `walls`
     /// (a non-periodic side) take no part (λ = 0; their u_l in (13)–(14) the body's own motion)
     bool is_wall_marker_off = false;
+    /// coupling.body_sweep = "simultaneous": every body's I(u) from the same u and the
+    /// corrections of eq. (16) added together (one sum over ranks and one halo exchange per
+    /// call); false: body after body, each reading the fluid the ones before left
+    bool is_simultaneous = false;
 };
 
-/// Eqs. (13)–(16) for every body, in the order of the store; `u` needs its ghosts filled.
+/// Eqs. (13)–(16) for every body, in the order of the store (or all at once, with
+/// settings.is_simultaneous); `u` needs its ghosts filled.
 /// Sets each body's velocity and ω, its λ (= λ*) and coupling.forcing_change, and adds the
 /// correction to `u` (accumulated across periodic sides, whose ghosts are then filled; those
 /// across walls are left as they were). Returns the largest rigid-motion defect

@@ -90,6 +90,12 @@ constexpr auto case_names(MarkerLayout /*tag*/)
     return std::to_array<EnumName<MarkerLayout>>(
         {{paper, "paper"}, {retracted, "retracted"}, {surface, "surface"}});
 }
+constexpr auto case_names(BodySweep /*tag*/)
+{
+    using enum BodySweep;
+    return std::to_array<EnumName<BodySweep>>(
+        {{sequential, "sequential"}, {simultaneous, "simultaneous"}});
+}
 constexpr auto case_names(ContactCoupling /*tag*/)
 {
     using enum ContactCoupling;
@@ -98,7 +104,8 @@ constexpr auto case_names(ContactCoupling /*tag*/)
 constexpr auto case_names(ContactFluidForce /*tag*/)
 {
     using enum ContactFluidForce;
-    return std::to_array<EnumName<ContactFluidForce>>({{none, "none"}, {held, "held"}});
+    return std::to_array<EnumName<ContactFluidForce>>(
+        {{automatic, "auto"}, {none, "none"}, {held, "held"}});
 }
 constexpr auto case_names(LubricationInContact /*tag*/)
 {

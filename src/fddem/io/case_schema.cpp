@@ -443,6 +443,17 @@ std::vector<KeySpec> case_schema()
                           "feedback around (docs/method.md §5, the stall in contact). false: every "
                           "marker acts, as the paper."),
                       &CaseConfig::coupling, &CouplingConfig::is_wall_marker_off));
+    s.push_back(bound(key("coupling", "body_sweep", T::string, none, "\"sequential\"",
+                          "How eqs. (13)–(16) go over the bodies in each outer iteration: "
+                          "sequential (body after body, each reading the fluid as the bodies "
+                          "before it left it; on several MPI ranks one sum over the ranks and one "
+                          "halo exchange per body) or simultaneous (every body from the same "
+                          "fluid, the corrections added together, as eq. (16) spreads all the "
+                          "markers at once: one sum and one halo exchange per outer iteration, "
+                          "whatever the number of bodies). Bodies whose kernel supports do not "
+                          "meet get the same answer either way; touching ones converge to the "
+                          "same λ by different paths (docs/method.md §4)."),
+                      &CaseConfig::coupling, &CouplingConfig::body_sweep));
 
     s.push_back(bound(key("contact", "model", T::string, none, "\"linear\"",
                           "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "
@@ -458,13 +469,16 @@ std::vector<KeySpec> case_schema()
                           "piles); additive: the mean contact force of the sub-steps is added "
                           "to (13)–(14) (unstable when collisions are much shorter than Δt)."),
                       &CaseConfig::contact, &ContactConfig::coupling));
-    s.push_back(bound(key("contact", "fluid_force", T::string, none, "\"none\"",
+    s.push_back(bound(key("contact", "fluid_force", T::string, none, "\"auto\"",
                           "The fluid's force on a body during the DEM sub-steps: none (the "
                           "paper: its buoyant weight only; with the paper coupling a body the DEM "
                           "moves, in contact or within the margin or the lubrication range, then "
-                          "feels no resolved fluid force) or held (the resolved hydrodynamic "
+                          "feels no resolved fluid force), held (the resolved hydrodynamic "
                           "force and torque of the step before, held constant over the sub-steps "
-                          "in which it touches nothing; docs/method.md §5, Coupling)."),
+                          "in which it touches nothing) or auto: held when lubrication.enabled "
+                          "(a body within the lubrication range of a wall would otherwise fall "
+                          "beside it at its buoyant weight alone), none otherwise, as the paper "
+                          "(docs/method.md §5, Coupling)."),
                       &CaseConfig::contact, &ContactConfig::fluid_force));
     s.push_back(bound(positive(key("contact", "stiffness", T::real, "N/m", "none",
                                    "Linear: spring stiffness k (2D: per unit depth); or give "

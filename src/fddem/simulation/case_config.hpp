@@ -138,6 +138,12 @@ struct BodyGroupConfig {
 /// How the marker rings fill a body (coupling.markers).
 enum class MarkerLayout { paper, retracted, surface };
 
+/// How eqs. (13)–(16) go over the bodies in an outer iteration (coupling.body_sweep).
+enum class BodySweep {
+    sequential,  ///< body after body, each reading the fluid the ones before left (Gauss–Seidel)
+    simultaneous ///< all from the same u, corrections added together (Jacobi; one exchange)
+};
+
 /// [coupling]
 struct CouplingConfig {
     KernelKind kernel = KernelKind::hat; ///< the discrete delta function
@@ -153,6 +159,7 @@ struct CouplingConfig {
     /// Markers whose kernel support reaches a wall (closer to it than the kernel's half width)
     /// take no part in eqs. (13)–(16) (Kempe & Fröhlich 2012b, as Biegert et al. 2017 report)
     bool is_wall_marker_off = false;
+    BodySweep body_sweep = BodySweep::sequential; ///< coupling.body_sweep
 };
 
 /// What the reader derives for the DEM collision model (eq. (18)) from [contact] and the bodies.
@@ -171,9 +178,9 @@ struct ContactDerived {
 struct ContactConfig {
     ContactModelKind model = ContactModelKind::linear;
     ContactCoupling coupling = ContactCoupling::paper;
-    ContactFluidForce fluid_force = ContactFluidForce::none; ///< on a body in the sub-steps
-    std::optional<double> stiffness;                         ///< linear: k [N/m]
-    std::optional<double> damping;                           ///< linear: c [N·s/m]
+    ContactFluidForce fluid_force = ContactFluidForce::automatic; ///< on a body in the sub-steps
+    std::optional<double> stiffness;                              ///< linear: k [N/m]
+    std::optional<double> damping;                                ///< linear: c [N·s/m]
     std::optional<double> duration;                ///< linear: t_c of a wall collision [s]
     double tangential_stiffness_ratio = 2.0 / 7.0; ///< linear, adaptive: κ = k_t / k
     std::optional<double> impact_velocity;         ///< hertz_mindlin: the fastest impact [m/s]

@@ -56,7 +56,9 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
                                                                  config.simple.momentum_sweeps,
                                                                  config.simple.momentum_cycles},
       gravity_(gravity), is_paper_contact_(is_paper_contact),
-      is_wall_marker_off_(config.coupling.is_wall_marker_off), scheme_(config.time.scheme),
+      is_wall_marker_off_(config.coupling.is_wall_marker_off),
+      is_simultaneous_(config.coupling.body_sweep == BodySweep::simultaneous),
+      scheme_(config.time.scheme),
       poisson_(make_poisson_solver<Dim>(
           grid, bc.is_periodic,
           PoissonSettings{config.simple.pressure_solver, config.simple.linear_tolerance,
@@ -216,7 +218,8 @@ void OuterIterations<Dim>::couple_bodies(int k, double velocity_scale, const Ste
     const double defect = update_rigid_bodies<Dim>(
         bodies.all(), grid_, kernel_,
         RigidUpdateSettings<Dim>{properties_.density, gravity_, in.levels.dt_effective,
-                                 is_paper_contact_, in.levels.history_weight, is_wall_marker_off_},
+                                 is_paper_contact_, in.levels.history_weight, is_wall_marker_off_,
+                                 is_simultaneous_},
         state.u); // eqs. (13)–(16)
     if (scale <= std::numeric_limits<double>::min()) {
         // Fluid and bodies at rest until this update (the first iteration of a run from rest):

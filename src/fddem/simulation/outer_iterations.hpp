@@ -123,6 +123,7 @@ private:
     Vec<Dim> gravity_;
     bool is_paper_contact_;
     bool is_wall_marker_off_; ///< coupling.markers_off_at_walls
+    bool is_simultaneous_;    ///< coupling.body_sweep = "simultaneous"
     TimeScheme scheme_;       ///< time.scheme
     double dt_ = 0.0;
 

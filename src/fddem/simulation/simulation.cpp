@@ -159,12 +159,14 @@ void Simulation<Dim>::resolve_contacts(StepReport& report)
     // By default the last step's hydrodynamic force is left out: it is mostly the fluid's
     // reaction to the body's own acceleration (added mass), and holding it over the next step
     // feeds back on a body resting on a wall (Fig. 5 case: the lagged force pushed the disk off
-    // the floor again and again). With contact.fluid_force = "held" (docs/method.md §5,
+    // the floor again and again). With contact.fluid_force = "held", or "auto" (the default)
+    // and the lubrication correction on (docs/method.md §5,
     // Coupling) the last step's resolved force and torque are held over the sub-steps in which
     // the body touches nothing, so that a body the DEM moves (within the margin or the
     // lubrication range) keeps the fluid's resistance, as resolved codes hold the fluid force
     // over their collision sub-steps; a body resting on a wall touches it and gets none.
-    const bool holds_fluid = config_.contact.fluid_force == ContactFluidForce::held;
+    const bool holds_fluid =
+        held_fluid_force_applies(config_.contact.fluid_force, config_.lubrication.is_enabled);
     for (Particle<Dim>& body : bodies_) {
         body.contact.steady_force = (body.density - properties_.density) * body.volume() * gravity_;
         body.contact.steady_torque = zero_angular<Dim>();
