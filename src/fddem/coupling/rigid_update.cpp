@@ -43,23 +43,50 @@ RigidVelocity<Dim> new_motion(const Particle<Dim>& body, const RigidUpdateSettin
                                c.lambda_star); // eqs. (13)–(14)
 }
 
-/// I(u) at every marker of the body, the same on every rank of a split grid (issue 15): each
-/// marker is interpolated by the rank that owns the cell it sits in (its kernel support is then
-/// within that rank's storage, whose halo is filled), the others give zero, and the sum over the
-/// ranks is exactly the owner's value (x + 0 = x), so U and ω of eqs. (13)–(14) come out the same
-/// on every rank and as on one process. One message per body and outer iteration: it grows with
-/// the bodies' count, not only with those a rank holds (docs/parallel.md).
+/// I(u) at the markers of one body that sit in cells this rank owns (their kernel support is
+/// then within the rank's storage, whose halo is filled); zero at the others.
 template <int Dim, class Kernel>
-void interpolate_at_markers(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
-                            MarkerCoupling<Dim>& c)
+void interpolate_owned(const MacGrid<Dim>& grid, const FaceField<Dim>& u, MarkerCoupling<Dim>& c)
 {
     for (std::size_t l = 0; l < c.markers.size(); ++l) {
         c.fluid[l] = grid.owns_point(c.positions[l])
                          ? interpolate_velocity<Dim, Kernel>(grid, u, c.positions[l])
                          : Vec<Dim>::Zero();
     }
+}
+
+/// I(u) at every marker of the body, the same on every rank of a split grid (issue 15): each
+/// marker is interpolated by the rank that owns the cell it sits in, the others give zero, and
+/// the sum over the ranks is exactly the owner's value (x + 0 = x), so U and ω of eqs. (13)–(14)
+/// come out the same on every rank and as on one process. One message per body and outer
+/// iteration with the sequential sweep; the simultaneous one sends one for all the bodies
+/// (sum_over_ranks below; docs/parallel.md).
+template <int Dim, class Kernel>
+void interpolate_at_markers(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
+                            MarkerCoupling<Dim>& c)
+{
+    interpolate_owned<Dim, Kernel>(grid, u, c);
     if (grid.communicator().size() > 1) {
         grid.communicator().sum(flat_values<Dim>(c.fluid));
+    }
+}
+
+/// The markers' I(u) of all the bodies summed over the ranks in one message, in the order of
+/// the store (x + 0 = x, as in interpolate_at_markers).
+template <int Dim>
+void sum_over_ranks(std::span<Particle<Dim>> bodies, const Communicator& ranks)
+{
+    std::vector<double> all;
+    for (Particle<Dim>& body : bodies) {
+        const std::span<double> v = flat_values<Dim>(body.coupling.fluid);
+        all.insert(all.end(), v.begin(), v.end());
+    }
+    ranks.sum(std::span<double>(all));
+    auto next = all.begin();
+    for (Particle<Dim>& body : bodies) {
+        const std::span<double> v = flat_values<Dim>(body.coupling.fluid);
+        std::copy_n(next, v.size(), v.begin());
+        next += static_cast<std::ptrdiff_t>(v.size());
     }
 }
 
@@ -175,31 +202,11 @@ template <int Dim, class Kernel>
 double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
                           const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
 {
-    std::size_t values = 0;
     for (Particle<Dim>& body : bodies) {
-        MarkerCoupling<Dim>& c = body.coupling;
-        for (std::size_t l = 0; l < c.markers.size(); ++l) {
-            c.fluid[l] = grid.owns_point(c.positions[l])
-                             ? interpolate_velocity<Dim, Kernel>(grid, u, c.positions[l])
-                             : Vec<Dim>::Zero();
-        }
-        values += c.markers.size() * Dim;
+        interpolate_owned<Dim, Kernel>(grid, u, body.coupling); // I(u), all from the same u
     }
     if (grid.communicator().size() > 1) {
-        // One message for every marker of every body (x + 0 = x, as in interpolate_at_markers).
-        std::vector<double> all;
-        all.reserve(values);
-        for (Particle<Dim>& body : bodies) {
-            const std::span<double> v = flat_values<Dim>(body.coupling.fluid);
-            all.insert(all.end(), v.begin(), v.end());
-        }
-        grid.communicator().sum(std::span<double>(all));
-        std::size_t next = 0;
-        for (Particle<Dim>& body : bodies) {
-            const std::span<double> v = flat_values<Dim>(body.coupling.fluid);
-            std::copy_n(all.begin() + static_cast<std::ptrdiff_t>(next), v.size(), v.begin());
-            next += v.size();
-        }
+        sum_over_ranks<Dim>(bodies, grid.communicator());
     }
     double defect = 0.0;
     std::vector<RigidVelocity<Dim>> motions(bodies.size());

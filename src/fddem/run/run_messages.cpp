@@ -70,6 +70,15 @@ void report_derived_values(const CaseConfig& config, RunMonitor& monitor)
                                     derived.duration, collision_text(config),
                                     derived.minimum_impact_velocity));
     }
+    if (contact.fluid_force == ContactFluidForce::automatic && !config.bodies.empty() &&
+        contact.model != ContactModelKind::none) {
+        monitor.message(
+            config.lubrication.is_enabled
+                ? "fddem: contact.fluid_force auto -> held (lubrication on): a body the DEM "
+                  "moves keeps the last step's resolved fluid force while it touches nothing"
+                : "fddem: contact.fluid_force auto -> none (lubrication off): the DEM moves a "
+                  "body in contact by its buoyant weight and the contact forces, as the paper");
+    }
     const NondimensionalConfig& nondimensional = config.nondimensional;
     if (!nondimensional.reynolds) {
         return;

@@ -156,7 +156,8 @@ template <int Dim>
 void Simulation<Dim>::resolve_contacts(StepReport& report)
 {
     // The buoyant weight (ρs − ρf) V g is held over the sub-steps, as in the paper's eq. (18).
-    // By default the last step's hydrodynamic force is left out: it is mostly the fluid's
+    // Without lubrication (contact.fluid_force "auto" or "none") the last step's hydrodynamic
+    // force is left out, as in the paper: it is mostly the fluid's
     // reaction to the body's own acceleration (added mass), and holding it over the next step
     // feeds back on a body resting on a wall (Fig. 5 case: the lagged force pushed the disk off
     // the floor again and again). With contact.fluid_force = "held", or "auto" (the default)

@@ -126,6 +126,18 @@ TEST(DemStep, HeldFluidForceActsWhileApartAndNotWhileTouching)
     EXPECT_EQ((touching(held) - touching(Vec<2>::Zero())).norm(), 0.0);
 }
 
+TEST(DemStep, AutomaticFluidForceIsHeldOnlyWithLubrication)
+{
+    // contact.fluid_force: "auto" (the default) holds the resolved force with lubrication on
+    // and leaves it out without, as the paper; the explicit choices ignore lubrication.
+    using enum ContactFluidForce;
+    static_assert(held_fluid_force_applies(automatic, true));
+    static_assert(!held_fluid_force_applies(automatic, false));
+    static_assert(held_fluid_force_applies(held, false) && held_fluid_force_applies(held, true));
+    static_assert(!held_fluid_force_applies(none, true) && !held_fluid_force_applies(none, false));
+    EXPECT_TRUE(held_fluid_force_applies(automatic, true));
+}
+
 TEST(DemStep, PairCollisionConservesMomentumAndGivesTheRestitution)
 {
     const double e = 0.7;

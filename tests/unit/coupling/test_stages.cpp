@@ -174,32 +174,35 @@ TEST(RigidUpdate, MarkersReachingAWallAreOffOnlyWhenAsked)
     // slip's; without the option every marker gets it.
     const MacGrid<2> grid = unit_box();
     const double h = 1.0 / 32.0;
-    const auto run = [&](bool is_off) {
-        std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.16))};
-        bodies[0].motion = Motion::prescribed; // moves at its velocity whatever the fluid
-        bodies[0].velocity_n = Vec<2>(0.0, 0.2);
-        bodies[0].velocity = Vec<2>(0.0, 0.2);
-        FaceField<2> u(grid);
-        place_markers<2>(bodies, grid, AnyKernel{HatKernel{}}, 0, 0.0);
-        RigidUpdateSettings<2> settings{1.0, Vec<2>::Zero(), 0.01, false};
-        settings.is_wall_marker_off = is_off;
-        (void)update_rigid_bodies<2>(bodies, grid, AnyKernel{HatKernel{}}, settings, u);
-        return bodies[0].coupling;
-    };
-    const MarkerCoupling<2> off = run(true);
-    const MarkerCoupling<2> on = run(false);
-    int near = 0;
-    for (std::size_t l = 0; l < off.markers.size(); ++l) {
-        const bool is_near = off.positions[l].y() < h;
-        near += is_near ? 1 : 0;
-        EXPECT_NEAR(on.lambda[l].y(), 20.0, 1e-12) << l; // the slip 0.2 over Δt = 0.01
-        if (is_near) {
-            EXPECT_EQ(off.lambda[l].norm(), 0.0) << l;
-        } else {
-            EXPECT_NEAR(off.lambda[l].y(), 20.0, 1e-12) << l;
+    for (const bool is_simultaneous : {false, true}) {
+        const auto run = [&](bool is_off) {
+            std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.16))};
+            bodies[0].motion = Motion::prescribed; // moves at its velocity whatever the fluid
+            bodies[0].velocity_n = Vec<2>(0.0, 0.2);
+            bodies[0].velocity = Vec<2>(0.0, 0.2);
+            FaceField<2> u(grid);
+            place_markers<2>(bodies, grid, AnyKernel{HatKernel{}}, 0, 0.0);
+            RigidUpdateSettings<2> settings{1.0, Vec<2>::Zero(), 0.01, false};
+            settings.is_wall_marker_off = is_off;
+            settings.is_simultaneous = is_simultaneous;
+            (void)update_rigid_bodies<2>(bodies, grid, AnyKernel{HatKernel{}}, settings, u);
+            return bodies[0].coupling;
+        };
+        const MarkerCoupling<2> off = run(true);
+        const MarkerCoupling<2> on = run(false);
+        int near = 0;
+        for (std::size_t l = 0; l < off.markers.size(); ++l) {
+            const bool is_near = off.positions[l].y() < h;
+            near += is_near ? 1 : 0;
+            EXPECT_NEAR(on.lambda[l].y(), 20.0, 1e-12) << l; // the slip 0.2 over Δt = 0.01
+            if (is_near) {
+                EXPECT_EQ(off.lambda[l].norm(), 0.0) << l;
+            } else {
+                EXPECT_NEAR(off.lambda[l].y(), 20.0, 1e-12) << l;
+            }
         }
+        EXPECT_GT(near, 0); // the test can tell
     }
-    EXPECT_GT(near, 0); // the test can tell
 }
 
 /// Two prescribed disks moving apart in a fluid at rest, `gap` between their surfaces, swept
@@ -209,7 +212,8 @@ struct SweptPair {
     FaceField<2> u;
 };
 
-SweptPair sweep_pair(double gap, bool is_simultaneous, int sweeps)
+SweptPair sweep_pair(double gap, bool is_simultaneous, int sweeps,
+                     Motion motion = Motion::prescribed)
 {
     const MacGrid<2> grid = unit_box();
     const double diameter = 0.3;
@@ -218,11 +222,12 @@ SweptPair sweep_pair(double gap, bool is_simultaneous, int sweeps)
                   FaceField<2>(grid)};
     for (int b = 0; b < 2; ++b) {
         Particle<2>& p = out.bodies[static_cast<std::size_t>(b)];
-        p.motion = Motion::prescribed;
+        p.motion = motion;
+        p.density = 1.5;
         p.velocity = p.velocity_n = Vec<2>(b == 0 ? -0.1 : 0.1, 0.05 * b);
     }
     place_markers<2>(out.bodies, grid, AnyKernel{HatKernel{}}, 0, 0.0);
-    RigidUpdateSettings<2> settings{1.0, Vec<2>::Zero(), 0.01, false};
+    RigidUpdateSettings<2> settings{1.0, Vec<2>(0.0, -1.0), 0.01, false};
     settings.is_simultaneous = is_simultaneous;
     for (int k = 0; k < sweeps; ++k) {
         (void)update_rigid_bodies<2>(out.bodies, grid, AnyKernel{HatKernel{}}, settings, out.u);
@@ -250,9 +255,20 @@ TEST(RigidUpdate, BodiesApartGetTheSameForcingFromEitherSweep)
     // 8 h apart, the hat kernels' supports (one h each side of a marker) do not meet: the
     // simultaneous sweep gives each body what the sequential one does, to the last bit, and the
     // same corrected fluid.
-    const SweptPair sequential = sweep_pair(8.0 / 32.0, false, 1);
-    const SweptPair simultaneous = sweep_pair(8.0 / 32.0, true, 1);
+    // Free bodies (their U, ω from eqs. (13)–(14)), three sweeps, so that λ* and the motion of
+    // the sweeps before enter too.
+    const SweptPair sequential = sweep_pair(8.0 / 32.0, false, 3, Motion::free);
+    const SweptPair simultaneous = sweep_pair(8.0 / 32.0, true, 3, Motion::free);
     EXPECT_EQ(lambda_difference(sequential, simultaneous), 0.0);
+    for (std::size_t b = 0; b < 2; ++b) {
+        const Particle<2>& p = sequential.bodies[b];
+        const Particle<2>& q = simultaneous.bodies[b];
+        EXPECT_EQ(p.velocity, q.velocity) << b;
+        EXPECT_EQ(p.omega, q.omega) << b;
+        EXPECT_NE(p.velocity, p.velocity_n) << b; // the fluid and gravity moved them
+        EXPECT_EQ(p.coupling.lambda_star, q.coupling.lambda_star) << b;
+        EXPECT_EQ(p.coupling.forcing_change, q.coupling.forcing_change) << b;
+    }
     for (int a = 0; a < 2; ++a) {
         for (int i = 0; i < 33; ++i) {
             for (int j = 0; j < 32; ++j) {
