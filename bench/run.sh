@@ -28,7 +28,8 @@
 #     and the parallel efficiency, and the machine's core count: rows with more ranks than
 #     cores are oversubscribed and say nothing about scaling. With --mpi-large also the
 #     issue's strong-scaling rows on 1 and 2 ranks: the cube at 128³ (5 steps) and ten Cate E4
-#     at d/h = 15.75 (105 × 105 × 168 cells, 3 steps).
+#     at d/h = 15.75 (105 × 105 × 168 cells, 3 steps), and 200 spheres (the soak, 5 steps) with
+#     the sequential and the simultaneous sweep over the bodies (coupling.body_sweep).
 #  8. with --no-base: without the kernel and cavity tables (1-2), e.g. `--no-base --mpi 4`.
 # The kernel table includes contact detection (cell list vs brute force) for 1e3-1e5 disks.
 # Options: --openfoam [N] (default N = 256), --paper, --steady [R] (default R = 3 rounds),
@@ -218,6 +219,17 @@ if [ "$mpi" = 1 ]; then
                 --force -q --set "domain.cells=[105,105,168]" --set time.max_steps=3 \
                 --set output.field_interval=0 --set simple.pressure_solver=fft
             rows+=("strong_e4_16_fft:$p:$dir")
+            # Many bodies: the soak's 200 spheres (cases/validation/sphere_pile_soak, 64 × 64 ×
+            # 96 cells), 5 steps, coupling.body_sweep sequential (one sum and one halo exchange
+            # per body and outer iteration) against simultaneous (one of each per outer
+            # iteration).
+            for sweep in sequential simultaneous; do
+                dir="$out/mpi_pile_${sweep}_$p"
+                "${launch[@]}" -n "$p" "$fddem" run cases/validation/sphere_pile_soak/case.toml \
+                    -o "$dir" --force -q --set time.max_steps=5 --set time.min_end=0 \
+                    --set output.field_interval=0 --set coupling.body_sweep=$sweep
+                rows+=("pile_${sweep:0:3}:$p:$dir")
+            done
         done
     fi
     $python "$here/table.py" mpi "$(nproc --all)" "${rows[@]}"

@@ -23,7 +23,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, os.path.join(ROOT, "python"))
 from fddem import io as fddem_io  # noqa: E402
-from fddem import heavy_disk, impulsive_cylinder, plots, references, shedding  # noqa: E402
+from fddem import heavy_disk, impulsive_cylinder, pile, plots, references, shedding  # noqa: E402
 from fddem import sphere_wake, sphere_wall, ten_cate, two_spheres, uhlmann  # noqa: E402
 from fddem import wake as cylinder_wake  # noqa: E402
 from fddem.units import Units  # noqa: E402
@@ -211,6 +211,18 @@ def pile_check(name, case, overlap_bound, quick):
                            (0.0, 0.0), (2.0, 6.0), CGS)
 
     return Check(name, case, [], quick, evaluate, plot)
+
+
+def sphere_pile_check(name):
+    """The soak of issues 14 and 16: 200 spheres from random insertion settle into a pile with
+    the lubrication correction on (cases/validation/sphere_pile_soak): no blow-up, no escape,
+    overlaps below 1 % of the radius, at rest at the end (python/fddem/pile.py)."""
+
+    def plot(run_dir, axes):
+        pile.plot_history(axes, run_dir)
+
+    return Check(name, "cases/validation/sphere_pile_soak/case.toml", [], False,
+                 lambda run_dir: pile.checks(run_dir, 0.01), plot)
 
 
 def uhlmann_check(name):
@@ -461,6 +473,7 @@ def all_checks():
         *[sphere_wake_check(re, nu, end) for re, nu, end in SPHERE_WAKE_SERIES],
         pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.01, False),
         pile_check("100 disks settle", "cases/benchmarks/sedimentation_100_disks/case.toml", 0.05, False),
+        sphere_pile_check("soak: 200 spheres settle into a pile, lubrication on (d/h = 8)"),
     ]
     if SHARED_UHLMANN is not None:
         checks.append(uhlmann_check("DKT at Re ≈ 450 vs Uhlmann (2005)"))

@@ -23,7 +23,7 @@ sys.path.insert(0, HERE)
 
 import fddem  # noqa: E402
 from fddem import heavy_disk, impulsive_cylinder, io, rebound, shedding, slices  # noqa: E402
-from fddem import sphere_wake, sphere_wall, ten_cate, two_spheres  # noqa: E402
+from fddem import pile, sphere_wake, sphere_wall, ten_cate, two_spheres  # noqa: E402
 from synthetic_run import make_run, velocity_field, write_pvd  # noqa: E402
 from synthetic_run import write_split_bodies, write_split_frame  # noqa: E402
 
@@ -829,3 +829,94 @@ class Rebound(unittest.TestCase):
         self.assertEqual(same["points"], len(t))
         self.assertAlmostEqual(same["run"]["e_eff"], same["reference"]["e_eff"], delta=1e-12)
         self.assertGreater(high["rms"], 0.05)
+
+
+class Pile(unittest.TestCase):
+    """tools/check_pile.py (python/fddem/pile.py) on hand-made piles whose every number is known:
+    a settled pile passes; a planted overlap, a body outside the box, a body still moving, a body
+    missing from one output and a run that did not complete each fail the check they concern."""
+
+    R = 0.25  # radius; box 2 × 2 × 3, walls all round, gravity along −z
+
+    def write_pile(self, directory, last_centres, speed_at_end=0.0, drop_one=False,
+                   overlap=None, status="completed"):
+        with open(os.path.join(directory, "case.toml"), "w") as f:
+            f.write("[domain]\nsize = [2.0, 2.0, 3.0]\ncells = [8, 8, 12]\n\n"
+                    "[fluid]\ngravity = [0.0, 0.0, -9.81]\n\n"
+                    "[time]\ndt = 0.01\nrest_speed = 0.001\n\n"
+                    f"[[bodies]]\nshape = \"sphere\"\ndiameter = {2 * self.R}\ncount = "
+                    f"{len(last_centres)}\n")
+        start = np.array(last_centres) + np.array([0.0, 0.0, 1.0])
+        times = (0.0, 0.1, 0.2)
+        with open(os.path.join(directory, "particles.csv"), "w") as f:
+            f.write("time,id,x,y,z,u,v,w,omega_x,omega_y,omega_z\n")
+            for k, t in enumerate(times):
+                for body, (a, b) in enumerate(zip(start, last_centres)):
+                    if drop_one and k == 1 and body == 0:
+                        continue
+                    x = a + (b - a) * k / (len(times) - 1)
+                    w = speed_at_end if k == len(times) - 1 else -1.0
+                    f.write(f"{t},{body},{x[0]},{x[1]},{x[2]},0,0,{w},0,0,0\n")
+        at_rest = {"at_rest_since": 0.15} if speed_at_end == 0.0 else {}
+        with open(os.path.join(directory, "summary.json"), "w") as f:
+            import json
+            json.dump({"status": status, "time": times[-1],
+                       "max_relative_overlap": overlap if overlap is not None else 0.004,
+                       **at_rest}, f)
+
+    def settled(self):
+        # Four on the floor 0.02 apart, one resting on them 0.1 % of its diameter clear.
+        r, a, b = self.R, 0.74, 1.26
+        floor = [[a, a, r], [b, a, r], [a, b, r], [b, b, r]]
+        reach = np.hypot(1.0 - a, 1.0 - a)
+        return floor + [[1.0, 1.0, r + np.sqrt((2 * r * 1.001) ** 2 - reach**2)]]
+
+    def failing(self, directory):
+        return [q for q, m, ref, tol, _ in pile.checks(directory, 0.01) if abs(m - ref) > tol]
+
+    def test_a_settled_pile_passes_and_its_height_is_read(self):
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_pile(directory, self.settled())
+            self.assertEqual(self.failing(directory), [])
+            m = pile.measure(directory)
+            self.assertEqual((m["bodies"], m["outputs"]), (5, 3))
+            self.assertAlmostEqual(m["pile_height"], self.settled()[-1][2] + self.R, places=12)
+            self.assertEqual(float(np.max(m["pair_overlap"])), 0.0)
+            self.assertEqual(subprocess.run([sys.executable, os.path.join(ROOT, "tools", "check_pile.py"),
+                                             directory], capture_output=True).returncode, 0)
+
+    def test_each_fault_fails_its_own_check(self):
+        r = self.R
+        overlapping = self.settled()
+        overlapping[1] = [0.74 - 2 * r * 0.98, 0.74, r]  # 4 % of r into the first
+        sunk = self.settled()
+        sunk[2] = [0.74, 1.26, 0.98 * r]  # 2 % of r into the floor
+        outside = self.settled()
+        outside[3] = [1.26, 2.2, r]
+        cases = {
+            "overlap": (dict(last_centres=overlapping), "from the positions"),
+            "floor": (dict(last_centres=sunk), "from the positions"),
+            "sub-steps": (dict(last_centres=self.settled(), overlap=0.02), "every DEM sub-step"),
+            "escape": (dict(last_centres=outside), "outside the box"),
+            "moving": (dict(last_centres=self.settled(), speed_at_end=0.01), "rest"),
+            "blow-up": (dict(last_centres=self.settled(), status="failed"), "completed"),
+        }
+        for fault, (kwargs, check) in cases.items():
+            with self.subTest(fault=fault), tempfile.TemporaryDirectory() as directory:
+                self.write_pile(directory, **kwargs)
+                failing = self.failing(directory)
+                self.assertTrue(any(check in q for q in failing), failing)
+                # A body out of the box is also deep in a wall; every other fault fails alone.
+                if fault != "escape":
+                    self.assertTrue(all(check in q for q in failing), failing)
+        with self.subTest(fault="missing"), tempfile.TemporaryDirectory() as directory:
+            self.write_pile(directory, self.settled(), drop_one=True)
+            with self.assertRaisesRegex(pile.PileError, "4 bodies at t = 0.1"):
+                pile.measure(directory)
+            result = subprocess.run([sys.executable, os.path.join(ROOT, "tools", "check_pile.py"),
+                                     directory], capture_output=True, text=True)
+            self.assertEqual(result.returncode, 2)
+            self.assertIn("4 bodies at t = 0.1", result.stderr)
+        self.assertAlmostEqual(float(pile.largest_overlaps(
+            np.array([overlapping]), r, np.zeros(3), np.array([2.0, 2.0, 3.0]),
+            np.zeros(3, dtype=bool))[0][0]), 0.04, places=12)
