@@ -167,6 +167,8 @@ def plot_side(axes, run_dir):
     axes.set_xlim(low[0], high[0])
     axes.set_ylim(low[vertical], high[vertical])
     axes.set_aspect("equal")
+    axes.set_xlabel("x [m]")
+    axes.set_ylabel("z [m]" if len(low) == 3 else "y [m]")
     axes.set_title(f"{m['bodies']} bodies at t = {m['times'][-1]:.3g} s", fontsize=8)
 
 
