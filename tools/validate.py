@@ -6,7 +6,9 @@ its reference, and writes OUT/report.md with a PNG per case (fddem against the r
     (or: fddem validate [--quick] [--only TEXT] [-o OUT])
 
 --quick: the cases that fit in a few minutes on two cores (run in CI); without it the full set
-(about 20 minutes before the 3D cases; the fixed-sphere series adds about 20). --only TEXT: the
+(about 20 minutes before the 3D cases; the fixed-sphere series in its 24 × 12 × 12 d box adds about
+an hour: Re 20 and Re 100 took 11-12 min each, two at a time on two cores; Re 200 and 250 run 40
+and 100 time units and were not timed in that box). --only TEXT: the
 checks whose name contains TEXT (e.g. "fixed sphere"). Each check states its reference, where the number comes from and why its
 tolerance is what it is. Exit status 0 when every check passes, 1 otherwise.
 """
