@@ -103,6 +103,7 @@ def measure(run_dir):
     times, ids, centres, speeds = frames(run_dir)
     pair, wall = largest_overlaps(centres, radius, low, high, periodic)
     rest_speed = case.get("time", {}).get("rest_speed")
+    rest_duration = case.get("time", {}).get("rest_duration", 0.1)
     gravity = np.asarray(case.get("fluid", {}).get("gravity", [0.0] * len(low)), dtype=float)
     up = -gravity / np.linalg.norm(gravity) if np.any(gravity) else None
     height = float(np.max(centres[-1] @ up) - low @ up + radius) if up is not None else None
@@ -121,6 +122,7 @@ def measure(run_dir):
         "max_speed": np.max(speeds, axis=1),
         "rest_speed": rest_speed,
         "at_rest_since": summary.get("at_rest_since"),
+        "rest_duration": rest_duration,
         "pile_height": height,
         "centres": centres,
     }
@@ -145,9 +147,11 @@ def checks(run_dir, overlap_bound=0.01):
     if m["rest_speed"] is not None:
         lines.append(("fastest body at the end / time.rest_speed", float(m["max_speed"][-1]) /
                       m["rest_speed"], 0.0, 1.0, "at rest: every body below time.rest_speed"))
-        lines.append(("ended at rest (1) or at time.end (0)",
-                      0.0 if m["at_rest_since"] is None else 1.0, 1.0, 0.0,
-                      "the run stops on time.rest_speed"))
+        ended_at_rest = (m["status"] == "completed" and m["at_rest_since"] is not None and
+                         m["end_time"] - m["at_rest_since"] >= m["rest_duration"] * (1 - 1e-9))
+        lines.append(("ended at rest (1) or not (0)", 1.0 if ended_at_rest else 0.0, 1.0, 0.0,
+                      "the run completed and stopped on time.rest_speed: every body below it "
+                      "for time.rest_duration"))
     return lines
 
 
