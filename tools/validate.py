@@ -215,16 +215,16 @@ def pile_check(name, case, overlap_bound, quick):
     return Check(name, case, [], quick, evaluate, plot)
 
 
-def sphere_pile_check(name):
-    """The soak of issues 14 and 16: 200 spheres from random insertion settle into a pile with
-    the lubrication correction on (cases/validation/sphere_pile_soak): no blow-up, no escape,
-    overlaps below 1 % of the radius, at rest at the end (python/fddem/pile.py)."""
+def sphere_pile_check(name, case="cases/validation/sphere_pile_soak/case.toml"):
+    """The soak of issues 14 and 16: spheres from random insertion settle into a pile with the
+    lubrication correction on (cases/validation/sphere_pile_soak, 200 spheres; or
+    sphere_pile_small, 25): no blow-up, no escape, overlaps below 1 % of the radius, at rest at
+    the end (python/fddem/pile.py)."""
 
     def plot(run_dir, axes):
         pile.plot_history(axes, run_dir)
 
-    return Check(name, "cases/validation/sphere_pile_soak/case.toml", [], False,
-                 lambda run_dir: pile.checks(run_dir, 0.01), plot)
+    return Check(name, case, [], False, lambda run_dir: pile.checks(run_dir, 0.01), plot)
 
 
 def uhlmann_check(name):
@@ -479,6 +479,8 @@ def all_checks():
         pile_check("eighteen disks, paper Figs. 9-13", "cases/paper/fig09_eighteen_disks/case.toml", 0.01, False),
         pile_check("100 disks settle", "cases/benchmarks/sedimentation_100_disks/case.toml", 0.05, False),
         sphere_pile_check("soak: 200 spheres settle into a pile, lubrication on (d/h = 8)"),
+        sphere_pile_check("small pile: 25 spheres settle and stay at rest, lubrication on (d/h = 8)",
+                          "cases/validation/sphere_pile_small/case.toml"),
     ]
     if SHARED_UHLMANN is not None:
         checks.append(uhlmann_check("DKT at Re ≈ 450 vs Uhlmann (2005)"))

@@ -9,7 +9,8 @@ namespace fddem {
 template <int Dim>
 void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<Dim>& grid,
                           const AnyKernel& kernel, double fluid_density,
-                          const Vec<Dim>& uniform_force, FaceField<Dim>& body_force)
+                          const Vec<Dim>& uniform_force, FaceField<Dim>& body_force,
+                          const BoundaryConditions<Dim>* adjoint_walls)
 {
     for (int a = 0; a < Dim; ++a) {
         body_force[a].fill(uniform_force[a]);
@@ -19,6 +20,9 @@ void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<D
     // added to their owners.
     const HaloExchange<Dim> halo(grid);
     halo.zero_ghosts(body_force);
+    if (adjoint_walls != nullptr) {
+        zero_wall_ghosts(grid, *adjoint_walls, body_force);
+    }
     std::visit(
         [&](auto k) {
             for (const Particle<Dim>& body : bodies) {
@@ -34,13 +38,18 @@ void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<D
             }
         },
         kernel);
+    if (adjoint_walls != nullptr) {
+        fold_wall_ghosts(grid, *adjoint_walls, body_force);
+    }
     halo.accumulate(body_force);
     halo.fill(body_force);
 }
 
 template void spread_marker_forces<2>(std::span<const Particle<2>>, const MacGrid<2>&,
-                                      const AnyKernel&, double, const Vec<2>&, FaceField<2>&);
+                                      const AnyKernel&, double, const Vec<2>&, FaceField<2>&,
+                                      const BoundaryConditions<2>*);
 template void spread_marker_forces<3>(std::span<const Particle<3>>, const MacGrid<3>&,
-                                      const AnyKernel&, double, const Vec<3>&, FaceField<3>&);
+                                      const AnyKernel&, double, const Vec<3>&, FaceField<3>&,
+                                      const BoundaryConditions<3>*);
 
 } // namespace fddem

@@ -21,7 +21,7 @@ RigidVelocity<Dim> new_motion(const Particle<Dim>& body, const RigidUpdateSettin
     if (!body.is_free()) {
         return {body.velocity, body.omega};
     }
-    if (s.is_paper_contact && body.contact.is_in_contact) {
+    if (!is_moved_by_fluid(body, s.is_paper_contact)) {
         // §2.3: "When the collision happens, the DEM is used in place of (13) and (14)": the
         // body moves as the sub-steps say; the fluid is made to follow.
         return {body.contact.velocity, body.contact.omega};
@@ -160,6 +160,34 @@ void spread_correction(const Particle<Dim>& body, const MacGrid<Dim>& grid,
     }
 }
 
+/// Before eq. (16)'s spreading into `u`: the ghosts zeroed, so that they collect only what is
+/// spread (periodic and rank ghosts; with coupling.adjoint_at_walls the walls' too).
+template <int Dim>
+void begin_spreading(const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
+{
+    HaloExchange<Dim>(grid).zero_ghosts(u);
+    if (s.adjoint_walls != nullptr) {
+        zero_wall_ghosts(grid, *s.adjoint_walls, u);
+    }
+}
+
+/// After eq. (16)'s spreading into `u`: the ghosts' share handed to the faces they are images
+/// of (walls' first with coupling.adjoint_at_walls, the transpose of the fill running in the
+/// reverse order), then the ghosts filled again, so that the next I(u) reads the correction.
+template <int Dim>
+void end_spreading(const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
+{
+    const HaloExchange<Dim> halo(grid);
+    if (s.adjoint_walls == nullptr) {
+        halo.accumulate(u);
+        halo.fill(u);
+        return;
+    }
+    fold_wall_ghosts(grid, *s.adjoint_walls, u);
+    halo.accumulate(u);
+    fill_velocity_ghosts(grid, *s.adjoint_walls, u);
+}
+
 /// The end of a body's update: λ* ← λ, and U, ω take their new values.
 template <int Dim>
 void finish_update(Particle<Dim>& body, const RigidVelocity<Dim>& motion)
@@ -183,11 +211,9 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
     // to the faces on the other side (zeroed first, then accumulated onto their owners) and are
     // filled again, so that the next body's I(u) reads this body's correction there as well.
     // On a split grid the accumulation adds the halo's share to the neighbours' faces.
-    const HaloExchange<Dim> halo(grid);
-    halo.zero_ghosts(u);
+    begin_spreading(grid, s, u);
     spread_correction<Dim, Kernel>(body, grid, s, u);
-    halo.accumulate(u);
-    halo.fill(u);
+    end_spreading(grid, s, u);
     finish_update(body, motion);
     return defect;
 }
@@ -213,13 +239,11 @@ double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& g
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         defect = std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], grid, s, motions[b]));
     }
-    const HaloExchange<Dim> halo(grid);
-    halo.zero_ghosts(u);
+    begin_spreading(grid, s, u);
     for (const Particle<Dim>& body : bodies) {
         spread_correction<Dim, Kernel>(body, grid, s, u); // eq. (16), all markers
     }
-    halo.accumulate(u);
-    halo.fill(u);
+    end_spreading(grid, s, u);
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         finish_update(bodies[b], motions[b]);
     }

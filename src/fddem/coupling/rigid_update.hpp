@@ -22,6 +22,7 @@
 
 #include "fddem/bodies/particle.hpp"
 #include "fddem/coupling/delta_kernel.hpp"
+#include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/grid/fields.hpp"
 
 #include <span>
@@ -44,13 +45,27 @@ struct RigidUpdateSettings {
     /// corrections of eq. (16) added together (one sum over ranks and one halo exchange per
     /// call); false: body after body, each reading the fluid the ones before left
     bool is_simultaneous = false;
+    /// coupling.adjoint_at_walls: the boundary conditions whose ghost fill eq. (16)'s spreading
+    /// is folded back through (fold_wall_ghosts), so that D is the adjoint of I beside a wall;
+    /// null: what is spread into a wall's ghosts is dropped
+    const BoundaryConditions<Dim>* adjoint_walls = nullptr;
 };
+
+/// Whether eqs. (13)–(14) give the body's motion in an outer iteration: a free body, unless the
+/// paper's contact coupling hands it to the DEM while it is in contact (§2.3), when its motion
+/// is given for the step, as a prescribed body's is.
+template <int Dim>
+[[nodiscard]] bool is_moved_by_fluid(const Particle<Dim>& body, bool is_paper_contact) noexcept
+{
+    return body.is_free() && !(is_paper_contact && body.contact.is_in_contact);
+}
 
 /// Eqs. (13)–(16) for every body, in the order of the store (or all at once, with
 /// settings.is_simultaneous); `u` needs its ghosts filled.
 /// Sets each body's velocity and ω, its λ (= λ*) and coupling.forcing_change, and adds the
 /// correction to `u` (accumulated across periodic sides, whose ghosts are then filled; those
-/// across walls are left as they were). Returns the largest rigid-motion defect
+/// across walls are left as they were, or with settings.adjoint_walls folded back onto the
+/// fluid they are images of and filled again). Returns the largest rigid-motion defect
 /// max |U + ω×r − I(u)| [m/s].
 template <int Dim>
 double update_rigid_bodies(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,

@@ -42,6 +42,40 @@ Box<Dim> boundary_faces(const MacGrid<Dim>& grid, int axis, int side)
     return box;
 }
 
+/// The rows of one side of `axis` that its ghost fill (and the fold, its transpose) works with,
+/// each over the whole storage extent of the other axes.
+template <int Dim>
+struct SideRows {
+    int n = 0;              ///< cells along the axis
+    int face = 0;           ///< the normal component's boundary face: 0 or n
+    Box<Dim> normal_ghosts; ///< the normal component's ghosts beyond that face
+    int first = 0;          ///< tangential components: the last interior row
+    int second = 0;         ///< and the one before it
+    int ghost = 0;          ///< the first ghost row
+    Box<Dim> outer;         ///< the ghost rows beyond it
+    Box<Dim> all_ghosts;    ///< every ghost row
+};
+
+template <int Dim>
+SideRows<Dim> side_rows(const MacGrid<Dim>& grid, int axis, int side)
+{
+    const Box<Dim> storage = grid.storage_box();
+    const auto ax = static_cast<std::size_t>(axis);
+    const int n = grid.cells(axis);
+    const bool low = side == 0;
+    SideRows<Dim> r;
+    r.n = n;
+    r.face = low ? 0 : n;
+    r.normal_ghosts =
+        low ? slab(grid, axis, storage.lo[ax], 0) : slab(grid, axis, n + 1, storage.hi[ax]);
+    r.first = low ? 0 : n - 1;
+    r.second = low ? 1 : n - 2;
+    r.ghost = low ? -1 : n;
+    r.outer = low ? slab(grid, axis, storage.lo[ax], -1) : slab(grid, axis, n + 1, storage.hi[ax]);
+    r.all_ghosts = low ? slab(grid, axis, storage.lo[ax], 0) : slab(grid, axis, n, storage.hi[ax]);
+    return r;
+}
+
 /// Normal component `axis` on `side` of that axis: the boundary face (except at an outflow,
 /// which set_outflow_velocity sets) and the ghost faces beyond it.
 template <int Dim>
@@ -51,12 +85,11 @@ void fill_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
     if (!grid.touches_side(axis, side)) {
         return; // an inner block side: its ghosts come from the halo exchange
     }
-    const Box<Dim> storage = grid.storage_box();
     const auto ax = static_cast<std::size_t>(axis);
-    const int n = grid.cells(axis);
+    const SideRows<Dim> rows = side_rows(grid, axis, side);
     const BoundaryKind kind = bc.side_kind(axis, side);
-    const int face = side == 0 ? 0 : n;
-    const Box<Dim> face_slab = side == 0 ? slab(grid, axis, 0, 1) : slab(grid, axis, n, n + 1);
+    const int face = rows.face;
+    const Box<Dim> face_slab = slab(grid, axis, face, face + 1);
     if (kind == BoundaryKind::wall) {
         const double wall = bc.wall(axis, side)[axis];
         for_each_index(face_slab, [&](const Index<Dim>& i) { ua(i) = wall; });
@@ -65,9 +98,7 @@ void fill_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
             ua(i) = inflow_velocity(grid, bc, axis, side, grid.face_centre(axis, i));
         });
     }
-    const Box<Dim> ghosts =
-        side == 0 ? slab(grid, axis, storage.lo[ax], 0) : slab(grid, axis, n + 1, storage.hi[ax]);
-    for_each_index(ghosts, [&](const Index<Dim>& i) {
+    for_each_index(rows.normal_ghosts, [&](const Index<Dim>& i) {
         const double boundary = ua(with_axis(i, axis, face));
         // Outflow: zero gradient; wall and inflow: odd images about the boundary value.
         ua(i) = kind == BoundaryKind::outflow
@@ -84,19 +115,15 @@ void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
     if (!grid.touches_side(axis, side)) {
         return;
     }
-    const Box<Dim> storage = grid.storage_box();
     const auto ax = static_cast<std::size_t>(axis);
-    const int n = grid.cells(axis);
-    // The last interior value and the one before it, and the first ghost's index.
-    const int first = side == 0 ? 0 : n - 1;
-    const int second = side == 0 ? 1 : n - 2;
-    const int ghost = side == 0 ? -1 : n;
-    const Box<Dim> outer =
-        side == 0 ? slab(grid, axis, storage.lo[ax], -1) : slab(grid, axis, n + 1, storage.hi[ax]);
+    const SideRows<Dim> rows = side_rows(grid, axis, side);
+    const int n = rows.n;
+    const int first = rows.first;
+    const int second = rows.second;
+    const int ghost = rows.ghost;
     if (bc.side_kind(axis, side) == BoundaryKind::outflow) {
-        const Box<Dim> all =
-            side == 0 ? slab(grid, axis, storage.lo[ax], 0) : slab(grid, axis, n, storage.hi[ax]);
-        for_each_index(all, [&](const Index<Dim>& i) { ua(i) = ua(with_axis(i, axis, first)); });
+        for_each_index(rows.all_ghosts,
+                       [&](const Index<Dim>& i) { ua(i) = ua(with_axis(i, axis, first)); });
         return;
     }
     // Wall or inflow (whose tangential velocity is zero): the first ghost continues the
@@ -107,10 +134,67 @@ void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
             (8.0 * wall - 6.0 * ua(with_axis(i, axis, first)) + ua(with_axis(i, axis, second))) /
             3.0;
     });
-    for_each_index(outer, [&](const Index<Dim>& i) {
+    for_each_index(rows.outer, [&](const Index<Dim>& i) {
         // Mirror about the wall at index -1/2 (low) or n - 1/2 (high).
         const int mirror = side == 0 ? -1 - i[ax] : 2 * n - 1 - i[ax];
         ua(i) = 2.0 * wall - ua(with_axis(i, axis, mirror));
+    });
+}
+
+/// The transpose of fill_normal_side's ghosts (not of its boundary face, which is set, not
+/// filled from the interior): each ghost's value goes to the entry it is filled from.
+template <int Dim>
+void fold_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
+                      int side, GridArray<Dim>& fa)
+{
+    if (!grid.touches_side(axis, side)) {
+        return;
+    }
+    const auto ax = static_cast<std::size_t>(axis);
+    const SideRows<Dim> rows = side_rows(grid, axis, side);
+    const int face = rows.face;
+    const bool is_outflow = bc.side_kind(axis, side) == BoundaryKind::outflow;
+    for_each_index(rows.normal_ghosts, [&](const Index<Dim>& i) {
+        // Outflow: u_g = u_face; wall and inflow: u_g = 2 u_face − u_mirror, u_face set.
+        if (is_outflow) {
+            fa(with_axis(i, axis, face)) += fa(i);
+        } else {
+            fa(with_axis(i, axis, 2 * face - i[ax])) -= fa(i);
+        }
+        fa(i) = 0.0;
+    });
+}
+
+/// The transpose of fill_tangential_side, in the reverse order of its fill.
+template <int Dim>
+void fold_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
+                          int side, GridArray<Dim>& fa)
+{
+    if (!grid.touches_side(axis, side)) {
+        return;
+    }
+    const auto ax = static_cast<std::size_t>(axis);
+    const SideRows<Dim> rows = side_rows(grid, axis, side);
+    const int n = rows.n;
+    const int first = rows.first;
+    const int second = rows.second;
+    const int ghost = rows.ghost;
+    if (bc.side_kind(axis, side) == BoundaryKind::outflow) {
+        for_each_index(rows.all_ghosts, [&](const Index<Dim>& i) {
+            fa(with_axis(i, axis, first)) += fa(i);
+            fa(i) = 0.0;
+        });
+        return;
+    }
+    for_each_index(rows.outer, [&](const Index<Dim>& i) {
+        const int mirror = side == 0 ? -1 - i[ax] : 2 * n - 1 - i[ax];
+        fa(with_axis(i, axis, mirror)) -= fa(i);
+        fa(i) = 0.0;
+    });
+    for_each_index(slab(grid, axis, ghost, ghost + 1), [&](const Index<Dim>& i) {
+        fa(with_axis(i, axis, first)) += -2.0 * fa(i);
+        fa(with_axis(i, axis, second)) += fa(i) / 3.0;
+        fa(i) = 0.0;
     });
 }
 
@@ -153,6 +237,55 @@ void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
                     fill_normal_side(grid, bc, d, side, ua);
                 } else {
                     fill_tangential_side(grid, bc, d, side, a, ua);
+                }
+            }
+        }
+    }
+}
+
+template <int Dim>
+void zero_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                      FaceField<Dim>& f)
+{
+    check_periodic_axes(grid, bc);
+    for (int d = 0; d < Dim; ++d) {
+        if (bc.periodic(d)) {
+            continue;
+        }
+        for (int side = 0; side < 2; ++side) {
+            if (!grid.touches_side(d, side)) {
+                continue;
+            }
+            const SideRows<Dim> rows = side_rows(grid, d, side);
+            for (int a = 0; a < Dim; ++a) {
+                // The normal component's ghosts start beyond its boundary face, the others' at
+                // once.
+                GridArray<Dim>& fa = f[a];
+                for_each_index(a == d ? rows.normal_ghosts : rows.all_ghosts,
+                               [&](const Index<Dim>& i) { fa(i) = 0.0; });
+            }
+        }
+    }
+}
+
+template <int Dim>
+void fold_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                      FaceField<Dim>& f)
+{
+    check_periodic_axes(grid, bc);
+    // fill_velocity_ghosts goes axis by axis, component by component, low side then high,
+    // each step over the whole storage extent of the other axes (edges and corners included);
+    // its transpose goes through the same steps in the reverse order.
+    for (int d = Dim - 1; d >= 0; --d) {
+        if (bc.periodic(d)) {
+            continue;
+        }
+        for (int a = Dim - 1; a >= 0; --a) {
+            for (int side = 1; side >= 0; --side) {
+                if (a == d) {
+                    fold_normal_side(grid, bc, d, side, f[a]);
+                } else {
+                    fold_tangential_side(grid, bc, d, side, f[a]);
                 }
             }
         }
@@ -267,6 +400,10 @@ template double set_outflow_velocity<2>(const MacGrid<2>&, const BoundaryConditi
                                         FaceField<2>&);
 template double set_outflow_velocity<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
                                         FaceField<3>&);
+template void zero_wall_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&, FaceField<2>&);
+template void zero_wall_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&, FaceField<3>&);
+template void fold_wall_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&, FaceField<2>&);
+template void fold_wall_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&, FaceField<3>&);
 template std::array<double, 2> boundary_fluxes<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
                                                   const FaceField<2>&);
 template std::array<double, 2> boundary_fluxes<3>(const MacGrid<3>&, const BoundaryConditions<3>&,

@@ -113,6 +113,28 @@ template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                           FaceField<Dim>& u);
 
+/// Zeroes the ghosts across the non-periodic sides of every velocity component (those that
+/// fill_velocity_ghosts fills from the boundary conditions); periodic and rank ghosts are the
+/// HaloExchange's. Before spreading into a field whose ghosts hold the boundary conditions'
+/// values, so that they hold only what was spread.
+template <int Dim>
+void zero_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                      FaceField<Dim>& f);
+
+/// The transpose of fill_velocity_ghosts at the non-periodic sides: what was spread into a ghost
+/// there is added to the entries that ghost is filled from, with the fill's own coefficients,
+/// and the ghost is zeroed (a wall's tangential first ghost, (8 u_w − 6 u_0 + u_1)/3: −2 onto
+/// u_0 and 1/3 onto u_1; an outer or normal ghost, an odd image: −1 onto its mirror; across an
+/// outflow: +1 onto the entry it repeats). Spreading followed by this is the exact adjoint of
+/// interpolating from a ghost-filled field, so that a marker beside a wall is coupled to the
+/// fluid through a symmetric, non-negative I·D (coupling.adjoint_at_walls; docs/method.md §5).
+/// What lands on a wall or inflow face itself is left there: those faces are not unknowns, and
+/// fill_velocity_ghosts sets them again. Call it before HaloExchange::accumulate (the fill runs
+/// the exchange first, so its transpose runs it last).
+template <int Dim>
+void fold_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                      FaceField<Dim>& f);
+
 /// The inflow's normal velocity component at a point `x` of the boundary face (axis, side),
 /// signed along +axis (into the box: positive on the low side, negative on the high side).
 template <int Dim>

@@ -443,6 +443,14 @@ std::vector<KeySpec> case_schema()
                           "feedback around (docs/method.md §5, the stall in contact). false: every "
                           "marker acts, as the paper."),
                       &CaseConfig::coupling, &CouplingConfig::is_wall_marker_off));
+    s.push_back(bound(key("coupling", "adjoint_at_walls", T::boolean, none, "true",
+                          "Fold what the markers spread into a wall's ghost images back onto "
+                          "the fluid those images are made of, with the ghost fill's own "
+                          "coefficients, so that spreading is the exact adjoint of the "
+                          "interpolation beside a wall and the forcing cannot feed the slip it "
+                          "corrects (docs/method.md §5, the stall in contact). false: what is "
+                          "spread into a wall's ghosts is dropped (fddem before 2026-11-27)."),
+                      &CaseConfig::coupling, &CouplingConfig::is_adjoint_at_walls));
     s.push_back(bound(key("coupling", "body_sweep", T::string, none, "\"sequential\"",
                           "How eqs. (13)–(16) go over the bodies in each outer iteration: "
                           "sequential (body after body, each reading the fluid as the bodies "

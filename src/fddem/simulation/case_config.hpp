@@ -159,6 +159,9 @@ struct CouplingConfig {
     /// Markers whose kernel support reaches a wall (closer to it than the kernel's half width)
     /// take no part in eqs. (13)–(16) (Kempe & Fröhlich 2012b, as Biegert et al. 2017 report)
     bool is_wall_marker_off = false;
+    /// What markers spread into a wall's ghost images goes back, through the ghost fill's
+    /// transpose, onto the fluid those images are made of: D the adjoint of I beside a wall
+    bool is_adjoint_at_walls = true;
     BodySweep body_sweep = BodySweep::sequential; ///< coupling.body_sweep
 };
 

@@ -57,6 +57,7 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
                                                                  config.simple.momentum_cycles},
       gravity_(gravity), is_paper_contact_(is_paper_contact),
       is_wall_marker_off_(config.coupling.is_wall_marker_off),
+      is_adjoint_at_walls_(config.coupling.is_adjoint_at_walls),
       is_simultaneous_(config.coupling.body_sweep == BodySweep::simultaneous),
       scheme_(config.time.scheme),
       poisson_(make_poisson_solver<Dim>(
@@ -219,7 +220,7 @@ void OuterIterations<Dim>::couple_bodies(int k, double velocity_scale, const Ste
         bodies.all(), grid_, kernel_,
         RigidUpdateSettings<Dim>{properties_.density, gravity_, in.levels.dt_effective,
                                  is_paper_contact_, in.levels.history_weight, is_wall_marker_off_,
-                                 is_simultaneous_},
+                                 is_simultaneous_, adjoint_walls()},
         state.u); // eqs. (13)–(16)
     if (scale <= std::numeric_limits<double>::min()) {
         // Fluid and bodies at rest until this update (the first iteration of a run from rest):
@@ -230,7 +231,9 @@ void OuterIterations<Dim>::couple_bodies(int k, double velocity_scale, const Ste
     report.body_change = 0.0;
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         // A free body converges on its velocity; a prescribed or fixed one, whose velocity is
-        // given, on the force the fluid puts on it.
+        // given, on the force the fluid puts on it. (A free body the DEM moves is measured on
+        // its velocity too, which the iterations do not change; converging it on its force
+        // instead made a hard collision diverge: docs/method.md §5, "A pile at rest".)
         const Particle<Dim>& body = bodies[b];
         const double change = body.is_free()
                                   ? rim_speed<Dim>(body.velocity - previous_velocity_[b],
@@ -260,7 +263,7 @@ void OuterIterations<Dim>::spread_body_force(const Particles<Dim>& bodies,
                                              FluidState<Dim>& state) const
 {
     spread_marker_forces<Dim>(bodies.all(), grid_, kernel_, properties_.density, uniform_force,
-                              state.body_force);
+                              state.body_force, adjoint_walls());
 }
 
 template <int Dim>

@@ -106,6 +106,12 @@ private:
     /// (measured), then λ, u and p (carried along).
     void collect_iterate(FluidState<Dim>& state, Particles<Dim>& bodies);
     [[nodiscard]] bool is_mixed_iteration(int k) const noexcept;
+    /// The boundary conditions spreading is folded back through (coupling.adjoint_at_walls),
+    /// or null.
+    [[nodiscard]] const BoundaryConditions<Dim>* adjoint_walls() const noexcept
+    {
+        return is_adjoint_at_walls_ ? &bc_ : nullptr;
+    }
 
     const MacGrid<Dim>& grid_;
     const BoundaryConditions<Dim>& bc_;
@@ -122,9 +128,10 @@ private:
     MomentumSettings momentum_;
     Vec<Dim> gravity_;
     bool is_paper_contact_;
-    bool is_wall_marker_off_; ///< coupling.markers_off_at_walls
-    bool is_simultaneous_;    ///< coupling.body_sweep = "simultaneous"
-    TimeScheme scheme_;       ///< time.scheme
+    bool is_wall_marker_off_;  ///< coupling.markers_off_at_walls
+    bool is_adjoint_at_walls_; ///< coupling.adjoint_at_walls
+    bool is_simultaneous_;     ///< coupling.body_sweep = "simultaneous"
+    TimeScheme scheme_;        ///< time.scheme
     double dt_ = 0.0;
 
     std::vector<MomentumSystem<Dim>> systems_;
