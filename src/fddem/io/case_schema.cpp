@@ -303,6 +303,17 @@ std::vector<KeySpec> case_schema()
                                  "reported as not converged)."),
                              1, 10000, false, false),
                       &CaseConfig::simple, &SimpleConfig::max_outer_iterations));
+    s.push_back(bound(ranged(key("simple", "min_outer_iterations_dem", T::integer, none, "1",
+                                 "Outer iterations a step takes at least when a free body the "
+                                 "DEM moves (paper coupling, in contact or within the "
+                                 "lubrication range) is in it. Its velocity is given for the "
+                                 "step, so the test on the bodies' change says nothing about "
+                                 "it after one iteration: 1 (the paper's cases) lets a pile at "
+                                 "rest take one iteration a step, which grows the mass residual "
+                                 "until the run fails; 2 holds it (docs/method.md §5, \"A pile "
+                                 "at rest\"), but stalled the Gondret St 152 contact."),
+                             1, 10, false, false),
+                      &CaseConfig::simple, &SimpleConfig::min_outer_iterations_dem));
     s.push_back(bound(ranged(key("simple", "velocity_relaxation", T::real, none, "1.0",
                                  "Under-relaxation α_u of the momentum equations."),
                              0.0, 1.0, true, false),

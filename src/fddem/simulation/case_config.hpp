@@ -89,6 +89,9 @@ struct SimpleConfig {
     /// `tolerance` to end a step (issue 13; docs/method.md §4)
     bool is_fluid_converged_with_bodies = false;
     int max_outer_iterations = 50;
+    /// Outer iterations a step takes at least when a free body the DEM moves is in it (1: the
+    /// step's test may end it after one, as the paper's cases run; 2 holds a pile at rest)
+    int min_outer_iterations_dem = 1;
     double velocity_relaxation = 1.0;
     double pressure_relaxation = 1.0;
     PressureUpdate pressure_update = PressureUpdate::rotational; ///< eq. (10)

@@ -47,6 +47,7 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
     : grid_(grid), bc_(bc), properties_(properties), kernel_(kernel),
       tolerance_(config.simple.tolerance),
       is_fluid_converged_with_bodies_(config.simple.is_fluid_converged_with_bodies),
+      min_iterations_dem_(config.simple.min_outer_iterations_dem),
       is_forcing_before_projection_(config.coupling.is_forcing_before_projection),
       max_iterations_(config.simple.max_outer_iterations),
       pressure_relaxation_(config.simple.pressure_relaxation),
@@ -97,16 +98,17 @@ void OuterIterations<Dim>::iterate(const StepInputs<Dim>& in, FluidState<Dim>& s
     // A step is judged on how much the bodies changed from one outer iteration to the next.
     // A free body the DEM moves (paper coupling, in contact or within the lubrication range) has
     // its velocity given for the step, so the first such change says nothing: at rest it is
-    // zero at once, and every step of a pile at rest was one momentum solve, one projection and
+    // zero at once, and every step of a pile at rest is one momentum solve, one projection and
     // one forcing correction, a map that grows the mass residual by a fixed factor a step
-    // whatever Δt (the soak's collapse). Such steps take at least two outer iterations, which
-    // holds the pile; converging those bodies on their force instead made a hard collision
-    // diverge (docs/method.md §5, "A pile at rest").
+    // whatever Δt (the soak's collapse). simple.min_outer_iterations_dem = 2 holds the pile;
+    // it is not the default because it stalled the Gondret St 152 contact, and converging
+    // those bodies on their force made a hard collision diverge (docs/method.md §5, "A pile at
+    // rest").
     const bool has_given_free_body =
         std::any_of(bodies.begin(), bodies.end(), [&](const Particle<Dim>& body) {
             return body.is_free() && !is_moved_by_fluid(body, is_paper_contact_);
         });
-    const int fewest = has_given_free_body ? 2 : 1; // outer iterations before the test
+    const int fewest = has_given_free_body ? min_iterations_dem_ : 1; // before the test
     for (int k = 1; k <= max_iterations_; ++k) {
         const double velocity_scale = reference_velocity(grid_, bc_, state.u);
         if (is_mixed_iteration(k)) {

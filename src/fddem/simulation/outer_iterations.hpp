@@ -119,6 +119,7 @@ private:
     const AnyKernel& kernel_;
     double tolerance_;
     bool is_fluid_converged_with_bodies_;
+    int min_iterations_dem_; ///< simple.min_outer_iterations_dem
     bool is_forcing_before_projection_;
     int max_iterations_;
     double pressure_relaxation_;
