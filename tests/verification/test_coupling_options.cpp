@@ -200,6 +200,35 @@ TEST(CouplingOptions, AStepOfABodyTheDemMovesTakesTheOuterIterationsAsked)
     EXPECT_EQ(fewest_one, 1); // the default: the single-iteration step the option is there for
 }
 
+/// The Fig. 5 disk (retracted markers) slid along at 5 cm/s with its centre at height y, three
+/// steps; coupling.adjoint_at_walls as given. The resolved force on it.
+Vec<2> force_on_a_sliding_disk(double y, const char* adjoint)
+{
+    const std::string fig05 =
+        std::string(FDDEM_SOURCE_DIR) + "/cases/paper/fig05_disk_in_box/case.toml";
+    Simulation<2> sim(read_case(fig05, {"domain.cells=[64,192]", "bodies.1.n_rings=0",
+                                        "coupling.markers=retracted", "bodies.1.motion=prescribed",
+                                        "bodies.1.velocity=[5.0,0.0]",
+                                        "bodies.1.position=[1.0," + std::to_string(y) + "]",
+                                        std::string("coupling.adjoint_at_walls=") + adjoint}));
+    for (int step = 0; step < 3; ++step) {
+        (void)sim.advance();
+    }
+    return sim.bodies()[0].force;
+}
+
+TEST(CouplingOptions, TheAdjointAtWallsReachesTheTimeStepAndOnlyBesideAWall)
+{
+    // Touching the floor (h = 1/32 cm), its lowest markers 0.3 h above it: their kernel reaches
+    // the floor's ghost images, and the fold changes the forcing there. In the middle of the box
+    // nothing changes, bit for bit.
+    const Vec<2> folded = force_on_a_sliding_disk(0.1255, "true");
+    const Vec<2> dropped = force_on_a_sliding_disk(0.1255, "false");
+    EXPECT_TRUE(folded.allFinite());
+    EXPECT_GT((folded - dropped).norm(), 1e-6 * folded.norm());
+    EXPECT_EQ(force_on_a_sliding_disk(3.0, "true"), force_on_a_sliding_disk(3.0, "false"));
+}
+
 TEST(CouplingOptions, TheBodySweepReachesTheTimeStep)
 {
     // coupling.body_sweep is carried from the case to the outer iterations: the four disks of

@@ -54,6 +54,14 @@ struct SideRows {
     int ghost = 0;          ///< the first ghost row
     Box<Dim> outer;         ///< the ghost rows beyond it
     Box<Dim> all_ghosts;    ///< every ghost row
+
+    /// The normal component's image of ghost row i about the boundary face.
+    [[nodiscard]] int normal_mirror(int i) const noexcept { return 2 * face - i; }
+    /// A tangential component's image of ghost row i about the wall, at row −1/2 or n − 1/2.
+    [[nodiscard]] int tangential_mirror(int i) const noexcept
+    {
+        return face == 0 ? -1 - i : 2 * n - 1 - i;
+    }
 };
 
 template <int Dim>
@@ -103,7 +111,7 @@ void fill_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
         // Outflow: zero gradient; wall and inflow: odd images about the boundary value.
         ua(i) = kind == BoundaryKind::outflow
                     ? boundary
-                    : 2.0 * boundary - ua(with_axis(i, axis, 2 * face - i[ax]));
+                    : 2.0 * boundary - ua(with_axis(i, axis, rows.normal_mirror(i[ax])));
     });
 }
 
@@ -117,7 +125,6 @@ void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
     }
     const auto ax = static_cast<std::size_t>(axis);
     const SideRows<Dim> rows = side_rows(grid, axis, side);
-    const int n = rows.n;
     const int first = rows.first;
     const int second = rows.second;
     const int ghost = rows.ghost;
@@ -135,9 +142,7 @@ void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
             3.0;
     });
     for_each_index(rows.outer, [&](const Index<Dim>& i) {
-        // Mirror about the wall at index -1/2 (low) or n - 1/2 (high).
-        const int mirror = side == 0 ? -1 - i[ax] : 2 * n - 1 - i[ax];
-        ua(i) = 2.0 * wall - ua(with_axis(i, axis, mirror));
+        ua(i) = 2.0 * wall - ua(with_axis(i, axis, rows.tangential_mirror(i[ax])));
     });
 }
 
@@ -159,7 +164,7 @@ void fold_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
         if (is_outflow) {
             fa(with_axis(i, axis, face)) += fa(i);
         } else {
-            fa(with_axis(i, axis, 2 * face - i[ax])) -= fa(i);
+            fa(with_axis(i, axis, rows.normal_mirror(i[ax]))) -= fa(i);
         }
         fa(i) = 0.0;
     });
@@ -175,7 +180,6 @@ void fold_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
     }
     const auto ax = static_cast<std::size_t>(axis);
     const SideRows<Dim> rows = side_rows(grid, axis, side);
-    const int n = rows.n;
     const int first = rows.first;
     const int second = rows.second;
     const int ghost = rows.ghost;
@@ -187,8 +191,7 @@ void fold_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
         return;
     }
     for_each_index(rows.outer, [&](const Index<Dim>& i) {
-        const int mirror = side == 0 ? -1 - i[ax] : 2 * n - 1 - i[ax];
-        fa(with_axis(i, axis, mirror)) -= fa(i);
+        fa(with_axis(i, axis, rows.tangential_mirror(i[ax]))) -= fa(i);
         fa(i) = 0.0;
     });
     for_each_index(slab(grid, axis, ghost, ghost + 1), [&](const Index<Dim>& i) {

@@ -95,20 +95,7 @@ void OuterIterations<Dim>::iterate(const StepInputs<Dim>& in, FluidState<Dim>& s
     mixing_.reset();
     // Only free bodies have velocities to measure (fixed and prescribed ones converge on λ).
     is_mixing_ = mixing_.depth() > 0 && bodies.has_free_body();
-    // A step is judged on how much the bodies changed from one outer iteration to the next.
-    // A free body the DEM moves (paper coupling, in contact or within the lubrication range) has
-    // its velocity given for the step, so the first such change says nothing: at rest it is
-    // zero at once, and every step of a pile at rest is one momentum solve, one projection and
-    // one forcing correction, a map that grows the mass residual by a fixed factor a step
-    // whatever Δt (the soak's collapse). simple.min_outer_iterations_dem = 2 holds the pile;
-    // it is not the default because it stalled the Gondret St 152 contact, and converging
-    // those bodies on their force made a hard collision diverge (docs/method.md §5, "A pile at
-    // rest").
-    const bool has_given_free_body =
-        std::any_of(bodies.begin(), bodies.end(), [&](const Particle<Dim>& body) {
-            return body.is_free() && !is_moved_by_fluid(body, is_paper_contact_);
-        });
-    const int fewest = has_given_free_body ? min_iterations_dem_ : 1; // before the test
+    const int fewest = fewest_iterations(bodies); // before the step's test may end it
     for (int k = 1; k <= max_iterations_; ++k) {
         const double velocity_scale = reference_velocity(grid_, bc_, state.u);
         if (is_mixed_iteration(k)) {
@@ -140,6 +127,25 @@ void OuterIterations<Dim>::iterate(const StepInputs<Dim>& in, FluidState<Dim>& s
         }
         report.outer_iterations = k;
     }
+}
+
+template <int Dim>
+int OuterIterations<Dim>::fewest_iterations(const Particles<Dim>& bodies) const
+{
+    // A step is judged on how much the bodies changed from one outer iteration to the next.
+    // A free body the DEM moves (paper coupling, in contact or within the lubrication range) has
+    // its velocity given for the step, so the first such change says nothing: at rest it is
+    // zero at once, and every step of a pile at rest is one momentum solve, one projection and
+    // one forcing correction, a map that grows the mass residual by a fixed factor a step
+    // whatever Δt (the soak's collapse). simple.min_outer_iterations_dem = 2 holds the pile;
+    // it is not the default because it stalled the Gondret St 152 contact, and converging
+    // those bodies on their force made a hard collision diverge (docs/method.md §5, "A pile at
+    // rest").
+    const bool has_given_free_body =
+        std::any_of(bodies.begin(), bodies.end(), [&](const Particle<Dim>& body) {
+            return body.is_free() && !is_moved_by_fluid(body, is_paper_contact_);
+        });
+    return has_given_free_body ? min_iterations_dem_ : 1;
 }
 
 template <int Dim>
@@ -248,9 +254,9 @@ void OuterIterations<Dim>::couple_bodies(int k, double velocity_scale, const Ste
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         // A free body converges on its velocity; a prescribed or fixed one, whose velocity is
         // given, on the force the fluid puts on it. (A free body the DEM moves is measured on
-        // its velocity too, which the iterations do not change, and its steps take at least two
-        // of them: iterate(); converging it on its force instead made a hard collision
-        // diverge: docs/method.md §5, "A pile at rest".)
+        // its velocity too, which the iterations do not change; its steps take at least
+        // simple.min_outer_iterations_dem of them, fewest_iterations(). Converging it on its
+        // force instead made a hard collision diverge: docs/method.md §5, "A pile at rest".)
         const Particle<Dim>& body = bodies[b];
         const double change = body.is_free()
                                   ? rim_speed<Dim>(body.velocity - previous_velocity_[b],

@@ -106,6 +106,9 @@ private:
     /// (measured), then λ, u and p (carried along).
     void collect_iterate(FluidState<Dim>& state, Particles<Dim>& bodies);
     [[nodiscard]] bool is_mixed_iteration(int k) const noexcept;
+    /// Outer iterations a step takes before its test may end it: simple.min_outer_iterations_dem
+    /// with a free body the DEM moves, else 1.
+    [[nodiscard]] int fewest_iterations(const Particles<Dim>& bodies) const;
     /// The boundary conditions spreading is folded back through (coupling.adjoint_at_walls),
     /// or null.
     [[nodiscard]] const BoundaryConditions<Dim>* adjoint_walls() const noexcept

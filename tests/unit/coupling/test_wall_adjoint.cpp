@@ -65,20 +65,27 @@ bool is_free(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int a,
     return true;
 }
 
+/// Every stored entry of every component drawn from U(−1, 1), ghosts included.
+template <int Dim>
+FaceField<Dim> random_field(const MacGrid<Dim>& grid, std::mt19937& rng)
+{
+    std::uniform_real_distribution<double> value(-1.0, 1.0);
+    FaceField<Dim> f(grid);
+    for_each_index(grid.storage_box(), [&](const Index<Dim>& i) {
+        for (int a = 0; a < Dim; ++a) {
+            f[a](i) = value(rng);
+        }
+    });
+    return f;
+}
+
 TYPED_TEST(WallFold, IsTheTransposeOfTheGhostFill)
 {
     constexpr int Dim = TypeParam::value;
     const auto [grid, bc] = mixed_box<Dim>();
     std::mt19937 rng(5);
-    std::uniform_real_distribution<double> value(-1.0, 1.0);
-    FaceField<Dim> v(grid);
-    FaceField<Dim> f(grid);
-    for_each_index(grid.storage_box(), [&](const Index<Dim>& i) {
-        for (int a = 0; a < Dim; ++a) {
-            v[a](i) = value(rng);
-            f[a](i) = value(rng);
-        }
-    });
+    const FaceField<Dim> v = random_field(grid, rng);
+    const FaceField<Dim> f = random_field(grid, rng);
     FaceField<Dim> filled = v;
     fill_velocity_ghosts(grid, bc, filled); // G v
     FaceField<Dim> folded = f;
@@ -110,13 +117,7 @@ TYPED_TEST(WallFold, ZeroedGhostsFoldNothingIntoTheFluid)
     constexpr int Dim = TypeParam::value;
     const auto [grid, bc] = mixed_box<Dim>();
     std::mt19937 rng(7);
-    std::uniform_real_distribution<double> value(-1.0, 1.0);
-    FaceField<Dim> u(grid);
-    for_each_index(grid.storage_box(), [&](const Index<Dim>& i) {
-        for (int a = 0; a < Dim; ++a) {
-            u[a](i) = value(rng);
-        }
-    });
+    const FaceField<Dim> u = random_field(grid, rng);
     FaceField<Dim> zeroed = u;
     zero_wall_ghosts(grid, bc, zeroed);
     FaceField<Dim> folded = zeroed;
