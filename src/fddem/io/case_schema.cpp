@@ -314,6 +314,14 @@ std::vector<KeySpec> case_schema()
                                  "at rest\"), but stalled the Gondret St 152 contact."),
                              1, 10, false, false),
                       &CaseConfig::simple, &SimpleConfig::min_outer_iterations_dem));
+    s.push_back(bound(key("simple", "hold_mass_residual", T::boolean, none, "false",
+                          "With bodies, end a step only once the mass residual is no larger "
+                          "than at the step's start (or has stopped falling, from the third "
+                          "outer iteration), as well as the bodies' change below "
+                          "simple.tolerance: for a free body that barely answers its fluid, "
+                          "whose steps otherwise end while the fluid diverges (docs/method.md "
+                          "§5, \"The fluid's residual held\")."),
+                      &CaseConfig::simple, &SimpleConfig::is_mass_residual_held));
     s.push_back(bound(ranged(key("simple", "velocity_relaxation", T::real, none, "1.0",
                                  "Under-relaxation α_u of the momentum equations."),
                              0.0, 1.0, true, false),

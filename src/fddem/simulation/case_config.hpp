@@ -92,6 +92,9 @@ struct SimpleConfig {
     /// Outer iterations a step takes at least when a free body the DEM moves is in it (1: the
     /// step's test may end it after one, as the paper's cases run; 2 holds a pile at rest)
     int min_outer_iterations_dem = 1;
+    /// With bodies, end a step only once its mass residual is no larger than at its start, or
+    /// has stopped falling (docs/method.md §5, "The fluid's residual held")
+    bool is_mass_residual_held = false;
     double velocity_relaxation = 1.0;
     double pressure_relaxation = 1.0;
     PressureUpdate pressure_update = PressureUpdate::rotational; ///< eq. (10)

@@ -48,6 +48,7 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
       tolerance_(config.simple.tolerance),
       is_fluid_converged_with_bodies_(config.simple.is_fluid_converged_with_bodies),
       min_iterations_dem_(config.simple.min_outer_iterations_dem),
+      is_mass_residual_held_(config.simple.is_mass_residual_held),
       is_forcing_before_projection_(config.coupling.is_forcing_before_projection),
       max_iterations_(config.simple.max_outer_iterations),
       pressure_relaxation_(config.simple.pressure_relaxation),
@@ -96,6 +97,8 @@ void OuterIterations<Dim>::iterate(const StepInputs<Dim>& in, FluidState<Dim>& s
     // Only free bodies have velocities to measure (fixed and prescribed ones converge on λ).
     is_mixing_ = mixing_.depth() > 0 && bodies.has_free_body();
     const int fewest = fewest_iterations(bodies); // before the step's test may end it
+    const double start_mass_residual = mass_residual;
+    double previous_mass_residual = mass_residual;
     for (int k = 1; k <= max_iterations_; ++k) {
         const double velocity_scale = reference_velocity(grid_, bc_, state.u);
         if (is_mixed_iteration(k)) {
@@ -108,7 +111,10 @@ void OuterIterations<Dim>::iterate(const StepInputs<Dim>& in, FluidState<Dim>& s
         }
         report.mass_residual = mass_residual;
         check_finite(k, in, state, report);
-        if (k > fewest && is_step_converged(has_bodies, report)) {
+        const bool is_mass_kept = is_mass_residual_kept(
+            has_bodies, k, start_mass_residual, previous_mass_residual, report.mass_residual);
+        previous_mass_residual = report.mass_residual;
+        if (k > fewest && is_step_converged(has_bodies, report) && is_mass_kept) {
             report.is_converged = true;
             // The next step starts from this assembly (Euler: see is_reusable_assembly()).
             is_reusable_assembly_ = !has_bodies && scheme_ == TimeScheme::euler;
@@ -164,6 +170,17 @@ bool OuterIterations<Dim>::is_step_converged(bool has_bodies, const StepReport& 
                (!is_fluid_converged_with_bodies_ || is_fluid_converged);
     }
     return is_fluid_converged;
+}
+
+template <int Dim>
+bool OuterIterations<Dim>::is_mass_residual_kept(bool has_bodies, int k, double start,
+                                                 double previous, double now) const
+{
+    // Back at (or below) the step's start, or no longer falling: from k = 3 on, an iteration
+    // that did not lower the residual says the coupled iteration has stopped helping (a body
+    // driven into a wall, whose markers ask for a flow the projection forbids).
+    return !has_bodies || !is_mass_residual_held_ || now <= std::max(tolerance_, start) ||
+           (k > 2 && now >= previous);
 }
 
 template <int Dim>

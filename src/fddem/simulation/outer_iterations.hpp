@@ -109,6 +109,11 @@ private:
     /// Outer iterations a step takes before its test may end it: simple.min_outer_iterations_dem
     /// with a free body the DEM moves, else 1.
     [[nodiscard]] int fewest_iterations(const Particles<Dim>& bodies) const;
+    /// simple.hold_mass_residual: with bodies, the mass residual `now` of outer iteration k is
+    /// no larger than the step's `start` one (or below simple.tolerance), or no smaller than the
+    /// `previous` iteration's.
+    [[nodiscard]] bool is_mass_residual_kept(bool has_bodies, int k, double start, double previous,
+                                             double now) const;
     /// The boundary conditions spreading is folded back through (coupling.adjoint_at_walls),
     /// or null.
     [[nodiscard]] const BoundaryConditions<Dim>* adjoint_walls() const noexcept
@@ -122,7 +127,8 @@ private:
     const AnyKernel& kernel_;
     double tolerance_;
     bool is_fluid_converged_with_bodies_;
-    int min_iterations_dem_; ///< simple.min_outer_iterations_dem
+    int min_iterations_dem_;     ///< simple.min_outer_iterations_dem
+    bool is_mass_residual_held_; ///< simple.hold_mass_residual
     bool is_forcing_before_projection_;
     int max_iterations_;
     double pressure_relaxation_;
