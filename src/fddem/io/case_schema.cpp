@@ -311,7 +311,8 @@ std::vector<KeySpec> case_schema()
                                  "it after one iteration: 1 (the paper's cases) lets a pile at "
                                  "rest take one iteration a step, which grows the mass residual "
                                  "until the run fails; 2 holds it (docs/method.md §5, \"A pile "
-                                 "at rest\"), but stalled the Gondret St 152 contact."),
+                                 "at rest\"); a stall of the Gondret St 152 contact was seen "
+                                 "with it once."),
                              1, 10, false, false),
                       &CaseConfig::simple, &SimpleConfig::min_outer_iterations_dem));
     s.push_back(bound(key("simple", "hold_mass_residual", T::boolean, none, "false",
