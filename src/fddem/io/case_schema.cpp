@@ -303,16 +303,15 @@ std::vector<KeySpec> case_schema()
                                  "reported as not converged)."),
                              1, 10000, false, false),
                       &CaseConfig::simple, &SimpleConfig::max_outer_iterations));
-    s.push_back(bound(ranged(key("simple", "min_outer_iterations_dem", T::integer, none, "1",
+    s.push_back(bound(ranged(key("simple", "min_outer_iterations_dem", T::integer, none, "2",
                                  "Outer iterations a step takes at least when a free body the "
                                  "DEM moves (paper coupling, in contact or within the "
                                  "lubrication range) is in it. Its velocity is given for the "
                                  "step, so the test on the bodies' change says nothing about "
-                                 "it after one iteration: 1 (the paper's cases) lets a pile at "
-                                 "rest take one iteration a step, which grows the mass residual "
-                                 "until the run fails; 2 holds it (docs/method.md §5, \"A pile "
-                                 "at rest\"); a stall of the Gondret St 152 contact was seen "
-                                 "with it once."),
+                                 "it after one iteration: with 1 a pile at rest takes one "
+                                 "iteration a step, which grows the mass residual until the "
+                                 "run fails; 2 holds it (docs/method.md §5, \"A pile at "
+                                 "rest\")."),
                              1, 10, false, false),
                       &CaseConfig::simple, &SimpleConfig::min_outer_iterations_dem));
     s.push_back(bound(key("simple", "hold_mass_residual", T::boolean, none, "false",

@@ -89,9 +89,9 @@ struct SimpleConfig {
     /// `tolerance` to end a step (issue 13; docs/method.md §4)
     bool is_fluid_converged_with_bodies = false;
     int max_outer_iterations = 50;
-    /// Outer iterations a step takes at least when a free body the DEM moves is in it (1: the
-    /// step's test may end it after one, as the paper's cases run; 2 holds a pile at rest)
-    int min_outer_iterations_dem = 1;
+    /// Outer iterations a step takes at least when a free body the DEM moves is in it (2 holds
+    /// a pile at rest; 1: the step's test may end it after one, as fddem ran before 2026-11-27)
+    int min_outer_iterations_dem = 2;
     /// With bodies, end a step only once its mass residual is no larger than at its start, or
     /// has stopped falling (docs/method.md §5, "The fluid's residual held")
     bool is_mass_residual_held = false;

@@ -143,11 +143,9 @@ int OuterIterations<Dim>::fewest_iterations(const Particles<Dim>& bodies) const
     // its velocity given for the step, so the first such change says nothing: at rest it is
     // zero at once, and every step of a pile at rest is one momentum solve, one projection and
     // one forcing correction, a map that grows the mass residual by a fixed factor a step
-    // whatever Δt (the soak's collapse). simple.min_outer_iterations_dem = 2 holds the pile;
-    // it is not the default because a stall of the Gondret St 152 contact was seen with it
-    // once (a second run of that case was identical with 1 and 2), and converging
-    // those bodies on their force made a hard collision diverge (docs/method.md §5, "A pile at
-    // rest").
+    // whatever Δt (the soak's collapse). simple.min_outer_iterations_dem = 2, the default,
+    // holds the pile; converging those bodies on their force instead made a hard collision
+    // diverge (docs/method.md §5, "A pile at rest").
     const bool has_given_free_body =
         std::any_of(bodies.begin(), bodies.end(), [&](const Particle<Dim>& body) {
             return body.is_free() && !is_moved_by_fluid(body, is_paper_contact_);
