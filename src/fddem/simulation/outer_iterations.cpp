@@ -97,6 +97,8 @@ void OuterIterations<Dim>::iterate(const StepInputs<Dim>& in, FluidState<Dim>& s
     // Only free bodies have velocities to measure (fixed and prescribed ones converge on λ).
     is_mixing_ = mixing_.depth() > 0 && bodies.has_free_body();
     const int fewest = fewest_iterations(bodies); // before the step's test may end it
+    // simple.hold_mass_residual compares each outer iteration's mass residual (of u*) with
+    // this one, of the velocity the step starts from, and with the iteration before.
     const double start_mass_residual = mass_residual;
     double previous_mass_residual = mass_residual;
     for (int k = 1; k <= max_iterations_; ++k) {

@@ -64,6 +64,9 @@ TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
     EXPECT_EQ(name_of(c.simple.convection), "central");
     EXPECT_FALSE(c.lubrication.is_enabled);
     EXPECT_EQ(name_of(c.lubrication.in_contact), "off"); // the schema's documented default
+    EXPECT_EQ(c.simple.min_outer_iterations_dem, 2);     // the schema's documented defaults
+    EXPECT_FALSE(c.simple.is_mass_residual_held);
+    EXPECT_TRUE(c.coupling.is_adjoint_at_walls);
     ASSERT_EQ(c.output.lines.size(), 1U);
     EXPECT_EQ(c.output.lines[0].n_points, 101);
 }
@@ -676,6 +679,20 @@ std::vector<BadCase> bad_cases()
          "contact.stiffness",
          "only contact.model = \"linear\" takes this key"},
         {"set_syntax", v, {"time.dt"}, "--set", 0, "time.dt", "expected section.key=value"},
+        {"set_no_outer_iteration_for_dem_steps",
+         v,
+         {"simple.min_outer_iterations_dem=0"},
+         "--set",
+         0,
+         "simple.min_outer_iterations_dem",
+         "out of range: must be [1, 10]"},
+        {"set_hold_mass_residual_not_a_boolean",
+         v,
+         {"simple.hold_mass_residual=maybe"},
+         "--set",
+         0,
+         "simple.hold_mass_residual",
+         "expected boolean"},
         {"set_unknown_key", v, {"time.dtt=1"}, "--set", 0, "time.dtt", "did you mean 'time.dt'"},
         {"set_key_with_word_added",
          v,
@@ -1172,9 +1189,12 @@ pressure_solver = "hypre"
 fft_planning = "measure"
 linear_tolerance = 1e-7
 linear_max_iterations = 33
+min_outer_iterations_dem = 3
+hold_mass_residual = true
 [coupling]
 kernel = "roma3"
 marker_spacing_ratio = 1.2
+adjoint_at_walls = false
 [lubrication]
 enabled = true
 range = 1.5
@@ -1227,7 +1247,10 @@ scheme = "bdf2"
     EXPECT_EQ(simple.fft_planning, FftPlanning::measure);
     EXPECT_EQ(simple.linear_tolerance, 1e-7);
     EXPECT_EQ(simple.linear_max_iterations, 33);
+    EXPECT_EQ(simple.min_outer_iterations_dem, 3);
+    EXPECT_TRUE(simple.is_mass_residual_held);
     EXPECT_EQ(c.coupling.kernel, KernelKind::roma3);
+    EXPECT_FALSE(c.coupling.is_adjoint_at_walls);
     EXPECT_EQ(c.coupling.marker_spacing_ratio, 1.2);
     EXPECT_EQ(c.output.directory, "somewhere");
     EXPECT_EQ(c.output.field_interval, 0.25);
