@@ -38,6 +38,10 @@ CAVITY = (CASES / "cavity.toml").read_text()
 CHANNEL = (CASES / "channel.toml").read_text()
 
 DISKS = (CASES / "disks.toml").read_text()
+# The same disks swept together: each body's eqs. (13)-(15) evaluated by its owner alone, whose
+# marker arrays a checkpoint must gather (coupling/marker_routes.hpp).
+DISKS_SWEPT = DISKS.replace('markers = "paper"', 'markers = "paper"\nbody_sweep = "simultaneous"')
+assert DISKS_SWEPT != DISKS
 
 BAD_DISK = CAVITY + """
 [[bodies]]
@@ -187,7 +191,7 @@ def main():
     work.mkdir(parents=True)
     split = [mpiexec, "--allow-run-as-root", "--oversubscribe", "-n", n, fddem]
     for name, text, end in (("cavity", CAVITY, "0.5"), ("channel", CHANNEL, "0.4"),
-                            ("disks", DISKS, "0.08")):
+                            ("disks", DISKS, "0.08"), ("disks_swept", DISKS_SWEPT, "0.08")):
         case = work / f"{name}.toml"
         case.write_text(text)
         one, many = work / f"{name}_one", work / f"{name}_split"

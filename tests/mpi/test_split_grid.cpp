@@ -244,6 +244,36 @@ TEST(SplitCommunicator, AllToAllDeliversEachRanksShareInRankOrderAndIsCounted)
               (static_cast<long>(send.size()) - kept) * static_cast<long>(sizeof(double)));
     EXPECT_EQ(after.collectives, before.collectives);
 
+    // send_and_receive: rank r sends to the next and the previous rank (once if they are the
+    // same), each message naming sender and receiver; one message counted per destination.
+    if (n > 1) {
+        const int next = (me + 1) % n;
+        const int previous = (me + n - 1) % n;
+        std::vector<int> peers{next};
+        if (previous != next) {
+            peers.push_back(previous);
+        }
+        std::vector<std::vector<double>> out;
+        std::vector<std::vector<double>> in;
+        for (const int q : peers) {
+            out.push_back({value(me, q, 0), value(me, q, 1)});
+            in.push_back(std::vector<double>(2, -1.0));
+        }
+        std::vector<Communicator::Outgoing> sends;
+        std::vector<Communicator::Incoming> receives;
+        for (std::size_t k = 0; k < peers.size(); ++k) {
+            sends.push_back({peers[k], out[k]});
+            receives.push_back({peers[k], in[k]});
+        }
+        const Traffic ahead = world.traffic();
+        world.send_and_receive(sends, receives, 7);
+        EXPECT_EQ(world.traffic().messages - ahead.messages, static_cast<long>(peers.size()));
+        for (std::size_t k = 0; k < peers.size(); ++k) {
+            EXPECT_EQ(in[k][0], value(peers[k], me, 0));
+            EXPECT_EQ(in[k][1], value(peers[k], me, 1));
+        }
+    }
+
     // all_gather: every rank's values, rank after rank.
     const std::vector<int> mine{me, 10 * me + 1};
     const std::vector<int> all = world.all_gather(mine);
@@ -373,8 +403,13 @@ TYPED_TEST(SplitGridTest, MarkersSpreadAndInterpolatedByTheirOwnersMatchOneProce
             FaceField<Dim> reference(g.whole);
             FaceField<Dim> spread(g.split);
             int n_owned = 0;
+            int n_misnamed = 0; // points whose owner rank_of_point names wrongly
             for (std::size_t m = 0; m < points.size(); ++m) {
                 spread_vector<Dim, Kernel>(g.whole, reference, points[m], forces[m], 0.01);
+                n_misnamed += (g.split.rank_of_point(points[m]) == world.rank()) ==
+                                      g.split.owns_point(points[m])
+                                  ? 0
+                                  : 1;
                 if (g.split.owns_point(points[m])) {
                     ASSERT_TRUE((fits_in_storage<Dim, Kernel>(g.split, points[m])));
                     spread_vector<Dim, Kernel>(g.split, spread, points[m], forces[m], 0.01);
@@ -382,6 +417,7 @@ TYPED_TEST(SplitGridTest, MarkersSpreadAndInterpolatedByTheirOwnersMatchOneProce
                 }
             }
             EXPECT_EQ(world.sum(n_owned), static_cast<double>(points.size()));
+            EXPECT_EQ(n_misnamed, 0);
             HaloExchange<Dim>(g.whole).accumulate(reference);
             HaloExchange<Dim>(g.split).accumulate(spread);
             for (int a = 0; a < Dim; ++a) {

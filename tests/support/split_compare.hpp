@@ -78,4 +78,23 @@ double body_difference(const Particles<Dim>& split, const Particles<Dim>& whole)
     return whole.empty() ? 0.0 : split.empty() ? 1.0 : worst;
 }
 
+/// The largest difference of the bodies' λ and λ* at any marker, relative to the largest |λ|
+/// of the one-process run.
+template <int Dim>
+double marker_force_difference(const Particles<Dim>& split, const Particles<Dim>& whole)
+{
+    double worst = 0.0;
+    double largest = 0.0;
+    for (std::size_t k = 0; k < whole.size(); ++k) {
+        const MarkerCoupling<Dim>& a = split[k].coupling;
+        const MarkerCoupling<Dim>& b = whole[k].coupling;
+        for (std::size_t l = 0; l < b.lambda.size(); ++l) {
+            worst = std::max({worst, (a.lambda[l] - b.lambda[l]).norm(),
+                              (a.lambda_star[l] - b.lambda_star[l]).norm()});
+            largest = std::max(largest, b.lambda[l].norm());
+        }
+    }
+    return largest > 0.0 ? worst / largest : worst;
+}
+
 } // namespace fddem::test

@@ -2,6 +2,7 @@
 #include "fddem/coupling/rigid_update.hpp"
 
 #include "fddem/core/time_scheme.hpp"
+#include "fddem/coupling/marker_routes.hpp"
 #include "fddem/coupling/rigid_coupling.hpp"
 #include "fddem/coupling/transfer.hpp"
 #include "fddem/grid/halo_exchange.hpp"
@@ -59,8 +60,8 @@ void interpolate_owned(const MacGrid<Dim>& grid, const FaceField<Dim>& u, Marker
 /// marker is interpolated by the rank that owns the cell it sits in, the others give zero, and
 /// the sum over the ranks is exactly the owner's value (x + 0 = x), so U and ω of eqs. (13)–(14)
 /// come out the same on every rank and as on one process. One message per body and outer
-/// iteration with the sequential sweep; the simultaneous one sends one for all the bodies
-/// (sum_over_ranks below; docs/parallel.md).
+/// iteration with the sequential sweep (the simultaneous one sends the markers to their bodies'
+/// owners instead: coupling/marker_routes.hpp; docs/parallel.md).
 template <int Dim, class Kernel>
 void interpolate_at_markers(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
                             MarkerCoupling<Dim>& c)
@@ -68,25 +69,6 @@ void interpolate_at_markers(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
     interpolate_owned<Dim, Kernel>(grid, u, c);
     if (grid.communicator().size() > 1) {
         grid.communicator().sum(flat_values<Dim>(c.fluid));
-    }
-}
-
-/// The markers' I(u) of all the bodies summed over the ranks in one message, in the order of
-/// the store (x + 0 = x, as in interpolate_at_markers).
-template <int Dim>
-void sum_over_ranks(std::span<Particle<Dim>> bodies, const Communicator& ranks)
-{
-    std::vector<double> all;
-    for (Particle<Dim>& body : bodies) {
-        const std::span<double> v = flat_values<Dim>(body.coupling.fluid);
-        all.insert(all.end(), v.begin(), v.end());
-    }
-    ranks.sum(std::span<double>(all));
-    auto next = all.begin();
-    for (Particle<Dim>& body : bodies) {
-        const std::span<double> v = flat_values<Dim>(body.coupling.fluid);
-        std::copy_n(next, v.size(), v.begin());
-        next += static_cast<std::ptrdiff_t>(v.size());
     }
 }
 
@@ -220,8 +202,9 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
 
 /// coupling.body_sweep = "simultaneous": every body reads the same u, and the corrections of all
 /// of them are added together (a Jacobi sweep over the bodies; eq. (16) with D over every
-/// marker at once, as the paper writes it). One sum over the ranks for all the bodies' I(u),
-/// and one reverse halo sum and fill, whatever the number of bodies. Bodies whose kernel
+/// marker at once, as the paper writes it). On a split grid, one message between each pair of
+/// ranks that share bodies each way, one sum of a few numbers per body over the ranks, and one
+/// reverse halo sum and fill, whatever the number of bodies. Bodies whose kernel
 /// supports do not meet get exactly what the sequential sweep gives them; where they meet, the
 /// two sweeps reach the same converged λ by different paths.
 template <int Dim, class Kernel>
@@ -231,13 +214,27 @@ double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& g
     for (Particle<Dim>& body : bodies) {
         interpolate_owned<Dim, Kernel>(grid, u, body.coupling); // I(u), all from the same u
     }
-    if (grid.communicator().size() > 1) {
-        sum_over_ranks<Dim>(bodies, grid.communicator());
-    }
     double defect = 0.0;
     std::vector<RigidVelocity<Dim>> motions(bodies.size());
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-        defect = std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], grid, s, motions[b]));
+    if (grid.communicator().size() == 1) {
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            defect = std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], grid, s, motions[b]));
+        }
+    } else {
+        // Split grid (marker_routes.hpp): the owner of each body gathers its markers' I(u),
+        // evaluates eqs. (13)–(15), and hands λ back to the ranks that spread them; the motion
+        // is then every rank's.
+        const MarkerRoutes<Dim> routes(bodies, grid);
+        routes.gather_at_owners(bodies);
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            if (routes.owns(b)) {
+                defect =
+                    std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], grid, s, motions[b]));
+            }
+        }
+        routes.return_to_holders(bodies);
+        share_motion<Dim>(bodies, motions, grid);
+        defect = grid.communicator().max(defect);
     }
     begin_spreading(grid, s, u);
     for (const Particle<Dim>& body : bodies) {

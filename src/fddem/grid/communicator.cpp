@@ -207,6 +207,40 @@ void Communicator::exchange(std::span<const double> send, int destination,
           "MPI_Sendrecv");
 }
 
+void Communicator::send_and_receive(std::span<const Outgoing> sends,
+                                    std::span<const Incoming> receives, int tag) const
+{
+    if (!mpi_) {
+        if (!sends.empty() || !receives.empty()) {
+            throw InternalError("Communicator::send_and_receive: no other rank on this process");
+        }
+        return;
+    }
+    const ScopedSeconds timer(mpi_->sent.seconds);
+    std::vector<MPI_Request> requests;
+    requests.reserve(sends.size() + receives.size());
+    for (const Incoming& in : receives) {
+        if (in.rank == mpi_->rank) {
+            throw InternalError("Communicator::send_and_receive: a message from this rank");
+        }
+        check(MPI_Irecv(in.values.data(), static_cast<int>(in.values.size()), MPI_DOUBLE, in.rank,
+                        tag, mpi_->comm, &requests.emplace_back()),
+              "MPI_Irecv");
+    }
+    for (const Outgoing& out : sends) {
+        if (out.rank == mpi_->rank) {
+            throw InternalError("Communicator::send_and_receive: a message to this rank");
+        }
+        ++mpi_->sent.messages;
+        mpi_->sent.bytes += static_cast<long>(out.values.size() * sizeof(double));
+        check(MPI_Isend(out.values.data(), static_cast<int>(out.values.size()), MPI_DOUBLE,
+                        out.rank, tag, mpi_->comm, &requests.emplace_back()),
+              "MPI_Isend");
+    }
+    check(MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE),
+          "MPI_Waitall");
+}
+
 std::vector<int> Communicator::all_gather(std::span<const int> local) const
 {
     if (!mpi_) {
@@ -287,6 +321,19 @@ void Communicator::cartesian_coords(std::span<int> coords) const
     }
     check(MPI_Cart_coords(mpi_->comm, mpi_->rank, static_cast<int>(coords.size()), coords.data()),
           "MPI_Cart_coords");
+}
+
+int Communicator::cartesian_rank(std::span<const int> coords) const
+{
+    if (!mpi_ || !mpi_->is_cartesian) {
+        if (mpi_ && mpi_->size > 1) {
+            throw InternalError("Communicator::cartesian_rank: not a Cartesian communicator");
+        }
+        return 0;
+    }
+    int rank = 0;
+    check(MPI_Cart_rank(mpi_->comm, coords.data(), &rank), "MPI_Cart_rank");
+    return rank;
 }
 
 std::pair<int, int> Communicator::cartesian_neighbours(int axis, bool axis_is_periodic) const

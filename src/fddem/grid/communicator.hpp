@@ -78,6 +78,21 @@ public:
     void exchange(std::span<const double> send, int destination, std::span<double> receive,
                   int source, int tag) const;
 
+    /// One message to each rank of `sends` and one from each rank of `receives`, all at once
+    /// (MPI_Irecv, MPI_Isend, MPI_Waitall): the few ranks that share a body's markers (issue
+    /// 15, coupling/marker_routes.hpp). Both sides know the sizes; no rank may be this one. On
+    /// this process alone both lists must be empty.
+    struct Outgoing {
+        int rank;
+        std::span<const double> values;
+    };
+    struct Incoming {
+        int rank;
+        std::span<double> values;
+    };
+    void send_and_receive(std::span<const Outgoing> sends, std::span<const Incoming> receives,
+                          int tag) const;
+
     /// Every rank's `local` values, rank after rank (MPI_Allgather; each rank gives as many).
     /// On this process alone, `local` itself.
     [[nodiscard]] std::vector<int> all_gather(std::span<const int> local) const;
@@ -102,6 +117,8 @@ public:
                                          std::span<const bool> is_periodic) const;
     /// This rank's coordinates in the Cartesian layout (all 0 on self()).
     void cartesian_coords(std::span<int> coords) const;
+    /// The rank at `coords` of the Cartesian layout (MPI_Cart_rank); 0 on self().
+    [[nodiscard]] int cartesian_rank(std::span<const int> coords) const;
     /// The ranks one step below and above this one along `axis` (MPI_Cart_shift): no_rank
     /// beyond a side that is not periodic. This process alone: itself if `axis_is_periodic`.
     [[nodiscard]] std::pair<int, int> cartesian_neighbours(int axis, bool axis_is_periodic) const;

@@ -85,6 +85,14 @@ std::pair<int, int> block_range(int n, int parts, int part)
     return {lo, lo + base + (part < extra ? 1 : 0)};
 }
 
+int block_of_cell(int n, int parts, int i) noexcept
+{
+    const int base = n / parts;
+    const int extra = n % parts;
+    const int long_cells = extra * (base + 1); // the first `extra` blocks hold base + 1 cells
+    return i < long_cells ? i / (base + 1) : extra + (i - long_cells) / base;
+}
+
 template <int Dim>
 Index<Dim> choose_rank_layout(const Index<Dim>& cells, int n_ranks)
 {
@@ -167,6 +175,21 @@ GridPartition<Dim> partition_grid(const Communicator& comm, const Index<Dim>& ce
         part.block.lo[ax(d)] = lo;
         part.block.hi[ax(d)] = hi;
         part.neighbours[ax(d)] = part.communicator.cartesian_neighbours(d, is_periodic[ax(d)]);
+    }
+    std::size_t n_blocks = 1;
+    for (int d = 0; d < Dim; ++d) {
+        n_blocks *= static_cast<std::size_t>(ranks[ax(d)]);
+    }
+    part.rank_of_block.resize(n_blocks);
+    for (std::size_t b = 0; b < n_blocks; ++b) {
+        std::array<int, Dim> coords{};
+        std::size_t rest = b;
+        for (int d = 0; d < Dim; ++d) {
+            const auto parts = static_cast<std::size_t>(ranks[ax(d)]);
+            coords[static_cast<std::size_t>(d)] = static_cast<int>(rest % parts);
+            rest /= parts;
+        }
+        part.rank_of_block[b] = part.communicator.cartesian_rank(coords);
     }
     return part;
 }

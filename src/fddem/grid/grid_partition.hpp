@@ -19,6 +19,7 @@
 
 #include <array>
 #include <utility>
+#include <vector>
 
 namespace fddem {
 
@@ -29,6 +30,10 @@ inline constexpr int min_block_cells = 3;
 
 /// Cells [lo, hi) of block `part` of `parts` along an axis of `n` cells.
 [[nodiscard]] std::pair<int, int> block_range(int n, int parts, int part);
+
+/// The block (part) of `parts` along an axis of `n` cells that holds cell `i` (0 ≤ i < n): the
+/// inverse of block_range.
+[[nodiscard]] int block_of_cell(int n, int parts, int i) noexcept;
 
 /// The number of ranks along each axis for `n_ranks` ranks on a grid of `cells`: of all the
 /// ways to write n_ranks as a product with every block at least min_block_cells thick, the one
@@ -57,6 +62,9 @@ struct GridPartition {
     /// domain that is not periodic; across a periodic side, the rank at the other end (this
     /// rank itself when the axis is not split).
     std::array<std::pair<int, int>, Dim> neighbours{};
+    /// The rank of every block, by its coordinates with the first axis fastest (MPI_Cart_rank of
+    /// each; {0} on one process): which rank owns a cell (MacGrid::rank_of_point).
+    std::vector<int> rank_of_block{0};
 };
 
 /// The whole grid on this process alone.

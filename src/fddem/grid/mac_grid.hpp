@@ -133,6 +133,22 @@ public:
         }
         return true;
     }
+    /// The rank that owns the cell holding the point x (the cell clamped into the domain, as in
+    /// owns_point): the one that interpolates and spreads a marker there.
+    [[nodiscard]] int rank_of_point(const Vec<Dim>& x) const noexcept
+    {
+        std::size_t block = 0;
+        std::size_t stride = 1;
+        for (int d = 0; d < Dim; ++d) {
+            const int i = static_cast<int>(std::floor((x[d] - origin_[d]) / spacing_[d]));
+            const int clamped = i < 0 ? 0 : (i >= cells_[ax(d)] ? cells_[ax(d)] - 1 : i);
+            const int parts = partition_.ranks[ax(d)];
+            block +=
+                stride * static_cast<std::size_t>(block_of_cell(cells_[ax(d)], parts, clamped));
+            stride *= static_cast<std::size_t>(parts);
+        }
+        return partition_.rank_of_block[block];
+    }
     /// All faces normal to `axis` from 0 to n (on a periodic axis face n is a ghost:
     /// owned_faces is the box to update).
     [[nodiscard]] Box<Dim> face_box(int axis) const noexcept

@@ -47,6 +47,7 @@ const Simulation<Dim>& Driver<Dim>::gathered()
     if (!whole_grid_) {
         return sim_;
     }
+    sim_.share_marker_state(); // rank 0's copy of every body's markers is what gets written
     ArchiveWriter bytes;
     GatheringWriter<Dim> writer(sim_.grid(), *whole_grid_, bytes);
     sim_.save_state(writer);

@@ -9,6 +9,7 @@
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/hydrodynamic_force.hpp"
 #include "fddem/coupling/marker_placement.hpp"
+#include "fddem/coupling/marker_routes.hpp"
 #include "fddem/simulation/simulation_setup.hpp"
 #include "fddem/simulation/step_diagnostics.hpp"
 
@@ -200,10 +201,35 @@ void Simulation<Dim>::move_bodies_and_markers(const TimeLevels& levels)
 {
     const double dt = clock_.dt;
     measure_hydrodynamic_forces<Dim>(bodies_.all(), properties_.density, levels);
+    std::vector<int> owners;
+    if (is_owner_split()) {
+        share_loads<Dim>(bodies_.all(), grid_); // only the owners hold every marker's λ
+        for (const Particle<Dim>& body : bodies_) {
+            owners.push_back(owner_rank(grid_, body));
+        }
+    }
     move_bodies<Dim>(bodies_.all(), dt, contacts_ && contacts_->is_paper_coupling); // eq. (17)
     wrap_centres<Dim>(bodies_.all(), grid_.domain()); // re-entering across periodic sides
     place_markers<Dim>(bodies_.all(), grid_, kernel_, clock_.step + 1, clock_.time + dt);
+    if (is_owner_split()) {
+        hand_over<Dim>(bodies_.all(), owners, grid_); // to new owners and holders
+    }
     outer_.spread_body_force(bodies_, uniform_force_, state_);
+}
+
+template <int Dim>
+bool Simulation<Dim>::is_owner_split() const noexcept
+{
+    return grid_.communicator().size() > 1 &&
+           config_.coupling.body_sweep == BodySweep::simultaneous;
+}
+
+template <int Dim>
+void Simulation<Dim>::share_marker_state()
+{
+    if (is_owner_split()) {
+        share_markers<Dim>(bodies_.all(), grid_);
+    }
 }
 
 template <int Dim>

@@ -110,6 +110,12 @@ public:
     /// Sets a uniform force per unit volume on the fluid [N/m³] (e.g. to drive a channel).
     void set_uniform_body_force(const Vec<Dim>& force);
 
+    /// Makes every rank's copy of the bodies' marker arrays (I(u), λ, λ*) the same. On a split
+    /// grid with coupling.body_sweep = "simultaneous" only the owner of a body holds them whole
+    /// (coupling/marker_routes.hpp); call this, on every rank, before save_state writes rank
+    /// 0's copy. Changes nothing any rank computes with. Nothing to do otherwise.
+    void share_marker_state();
+
     /// Writes everything the next steps depend on (io/checkpoint.hpp): see visit_state.
     template <class Archive>
     void save_state(Archive& archive) const
@@ -226,6 +232,9 @@ private:
     /// eq. (17) and what follows from it: hydrodynamic forces for output, the bodies moved,
     /// their markers placed and the body force spread for the next step.
     void move_bodies_and_markers(const TimeLevels& levels);
+    /// Whether the bodies' eqs. (13)–(15) are evaluated by their owners alone (a split grid
+    /// and the simultaneous sweep: coupling/marker_routes.hpp).
+    [[nodiscard]] bool is_owner_split() const noexcept;
     /// Tracks rest_since_ after a step (time.rest_speed).
     void track_rest();
 

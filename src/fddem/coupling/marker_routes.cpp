@@ -1,0 +1,331 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/coupling/marker_routes.hpp"
+
+#include "fddem/core/errors.hpp"
+
+#include <map>
+
+namespace fddem {
+namespace {
+
+/// Makes some values of every body the owner's on every rank: each rank writes, for the bodies
+/// it owns, `size(body)` values by `pack`, and zeros for the others; the sum over the ranks then
+/// holds the owner's values exactly (x + 0 = x), read back by `unpack`.
+template <int Dim, class Size, class Pack, class Unpack>
+void share_from_owners(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid, Size size,
+                       Pack pack, Unpack unpack)
+{
+    const Communicator& ranks = grid.communicator();
+    if (ranks.size() == 1) {
+        return;
+    }
+    std::size_t total = 0;
+    for (const Particle<Dim>& body : bodies) {
+        total += size(body);
+    }
+    std::vector<double> values(total, 0.0);
+    std::size_t at = 0;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const std::size_t n = size(bodies[b]);
+        if (owner_rank(grid, bodies[b]) == ranks.rank()) {
+            pack(b, std::span<double>(values).subspan(at, n));
+        }
+        at += n;
+    }
+    ranks.sum(std::span<double>(values));
+    at = 0;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const std::size_t n = size(bodies[b]);
+        unpack(b, std::span<const double>(values).subspan(at, n));
+        at += n;
+    }
+}
+
+template <class Values>
+void put(std::span<double> out, std::size_t& at, const Values& v, std::size_t n)
+{
+    for (std::size_t i = 0; i < n; ++i) {
+        out[at++] = v[static_cast<Eigen::Index>(i)];
+    }
+}
+
+template <class Values>
+void take(std::span<const double> in, std::size_t& at, Values& v, std::size_t n)
+{
+    for (std::size_t i = 0; i < n; ++i) {
+        v[static_cast<Eigen::Index>(i)] = in[at++];
+    }
+}
+
+/// λ and λ* of the markers of `sends` to their ranks, and of `receives` from theirs, into the
+/// bodies' records. Both sides list the same markers in the same order.
+template <int Dim>
+void send_lambda(std::span<Particle<Dim>> bodies, const Communicator& ranks,
+                 std::span<const MarkerLink> sends, std::span<const MarkerLink> receives, int tag)
+{
+    std::vector<std::vector<double>> out(sends.size());
+    std::vector<Communicator::Outgoing> messages;
+    for (std::size_t k = 0; k < sends.size(); ++k) {
+        for (const auto& [b, l] : sends[k].markers) {
+            const MarkerCoupling<Dim>& c = bodies[b].coupling;
+            out[k].insert(out[k].end(), c.lambda[l].data(), c.lambda[l].data() + Dim);
+            out[k].insert(out[k].end(), c.lambda_star[l].data(), c.lambda_star[l].data() + Dim);
+        }
+        messages.push_back({sends[k].rank, out[k]});
+    }
+    std::vector<std::vector<double>> in(receives.size());
+    std::vector<Communicator::Incoming> slots;
+    for (std::size_t k = 0; k < receives.size(); ++k) {
+        in[k].resize(receives[k].markers.size() * 2 * Dim);
+        slots.push_back({receives[k].rank, in[k]});
+    }
+    ranks.send_and_receive(messages, slots, tag);
+    for (std::size_t k = 0; k < receives.size(); ++k) {
+        std::size_t at = 0;
+        for (const auto& [b, l] : receives[k].markers) {
+            MarkerCoupling<Dim>& c = bodies[b].coupling;
+            take(in[k], at, c.lambda[l], Dim);
+            take(in[k], at, c.lambda_star[l], Dim);
+        }
+    }
+}
+
+template <int Dim>
+constexpr std::size_t angular_size = Dim == 2 ? 1 : 3;
+
+template <int Dim>
+double& angular_entry(AngularVec<Dim>& w, std::size_t i)
+{
+    if constexpr (Dim == 2) {
+        (void)i;
+        return w;
+    } else {
+        return w[static_cast<Eigen::Index>(i)];
+    }
+}
+
+} // namespace
+
+template <int Dim>
+MarkerRoutes<Dim>::MarkerRoutes(std::span<const Particle<Dim>> bodies, const MacGrid<Dim>& grid)
+    : is_owned_(bodies.size(), 0), ranks_(&grid.communicator())
+{
+    const int me = ranks_->rank();
+    std::map<int, MarkerLink> to_owners;
+    std::map<int, MarkerLink> from_holders;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const int owner = owner_rank(grid, bodies[b]);
+        is_owned_[b] = owner == me ? 1 : 0;
+        const std::vector<Vec<Dim>>& positions = bodies[b].coupling.positions;
+        for (std::size_t l = 0; l < positions.size(); ++l) {
+            const int holder = grid.rank_of_point(positions[l]);
+            if ((holder == me) != grid.owns_point(positions[l])) {
+                throw InternalError("MarkerRoutes: rank_of_point and owns_point disagree");
+            }
+            const auto entry =
+                std::pair{static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(l)};
+            if (owner == me && holder != me) {
+                MarkerLink& link = from_holders[holder];
+                link.rank = holder;
+                link.markers.push_back(entry);
+            } else if (owner != me && holder == me) {
+                MarkerLink& link = to_owners[owner];
+                link.rank = owner;
+                link.markers.push_back(entry);
+            }
+        }
+    }
+    for (auto& [rank, link] : to_owners) {
+        to_owners_.push_back(std::move(link));
+    }
+    for (auto& [rank, link] : from_holders) {
+        from_holders_.push_back(std::move(link));
+    }
+}
+
+template <int Dim>
+std::vector<int> MarkerRoutes<Dim>::peers() const
+{
+    std::map<int, int> seen;
+    for (const MarkerLink& link : to_owners_) {
+        seen[link.rank] = 1;
+    }
+    for (const MarkerLink& link : from_holders_) {
+        seen[link.rank] = 1;
+    }
+    std::vector<int> out;
+    for (const auto& [rank, flag] : seen) {
+        out.push_back(rank);
+    }
+    return out;
+}
+
+template <int Dim>
+void MarkerRoutes<Dim>::gather_at_owners(std::span<Particle<Dim>> bodies) const
+{
+    // Tag 41: the I(u) going to the owners (42 below: λ coming back).
+    std::vector<std::vector<double>> out(to_owners_.size());
+    std::vector<Communicator::Outgoing> sends;
+    for (std::size_t k = 0; k < to_owners_.size(); ++k) {
+        for (const auto& [b, l] : to_owners_[k].markers) {
+            const Vec<Dim>& v = bodies[b].coupling.fluid[l];
+            out[k].insert(out[k].end(), v.data(), v.data() + Dim);
+        }
+        sends.push_back({to_owners_[k].rank, out[k]});
+    }
+    std::vector<std::vector<double>> in(from_holders_.size());
+    std::vector<Communicator::Incoming> receives;
+    for (std::size_t k = 0; k < from_holders_.size(); ++k) {
+        in[k].resize(from_holders_[k].markers.size() * Dim);
+        receives.push_back({from_holders_[k].rank, in[k]});
+    }
+    ranks_->send_and_receive(sends, receives, 41);
+    for (std::size_t k = 0; k < from_holders_.size(); ++k) {
+        std::size_t at = 0;
+        for (const auto& [b, l] : from_holders_[k].markers) {
+            take(in[k], at, bodies[b].coupling.fluid[l], Dim);
+        }
+    }
+}
+
+template <int Dim>
+void MarkerRoutes<Dim>::return_to_holders(std::span<Particle<Dim>> bodies) const
+{
+    send_lambda<Dim>(bodies, *ranks_, from_holders_, to_owners_, 42);
+}
+
+template <int Dim>
+void hand_over(std::span<Particle<Dim>> bodies, std::span<const int> previous_owners,
+               const MacGrid<Dim>& grid)
+{
+    const Communicator& ranks = grid.communicator();
+    if (ranks.size() == 1) {
+        return;
+    }
+    const int me = ranks.rank();
+    std::map<int, MarkerLink> sends;
+    std::map<int, MarkerLink> receives;
+    const auto add = [](std::map<int, MarkerLink>& links, int rank, std::size_t b, std::size_t l) {
+        MarkerLink& link = links[rank];
+        link.rank = rank;
+        link.markers.emplace_back(static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(l));
+    };
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const int from = previous_owners[b];
+        const int owner = owner_rank(grid, bodies[b]);
+        const std::vector<Vec<Dim>>& positions = bodies[b].coupling.positions;
+        for (std::size_t l = 0; l < positions.size(); ++l) {
+            // The new owner needs every marker; a holder those in its cells.
+            const int holder = grid.rank_of_point(positions[l]);
+            for (const int to : {owner, holder == owner ? from : holder}) {
+                if (to == from) {
+                    continue; // it has them
+                }
+                if (from == me) {
+                    add(sends, to, b, l);
+                } else if (to == me) {
+                    add(receives, from, b, l);
+                }
+            }
+        }
+    }
+    std::vector<MarkerLink> out;
+    std::vector<MarkerLink> in;
+    for (auto& [rank, link] : sends) {
+        out.push_back(std::move(link));
+    }
+    for (auto& [rank, link] : receives) {
+        in.push_back(std::move(link));
+    }
+    send_lambda<Dim>(bodies, ranks, out, in, 43);
+}
+
+template <int Dim>
+void share_motion(std::span<Particle<Dim>> bodies, std::span<RigidVelocity<Dim>> motions,
+                  const MacGrid<Dim>& grid)
+{
+    constexpr std::size_t n = Dim + angular_size<Dim> + 1;
+    share_from_owners<Dim>(
+        bodies, grid, [](const Particle<Dim>&) { return n; },
+        [&](std::size_t b, std::span<double> out) {
+            std::size_t at = 0;
+            put(out, at, motions[b].velocity, Dim);
+            for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
+                out[at++] = angular_entry<Dim>(motions[b].omega, i);
+            }
+            out[at] = bodies[b].coupling.forcing_change;
+        },
+        [&](std::size_t b, std::span<const double> in) {
+            std::size_t at = 0;
+            take(in, at, motions[b].velocity, Dim);
+            for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
+                angular_entry<Dim>(motions[b].omega, i) = in[at++];
+            }
+            bodies[b].coupling.forcing_change = in[at];
+        });
+}
+
+template <int Dim>
+void share_loads(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid)
+{
+    constexpr std::size_t n = Dim + angular_size<Dim>;
+    share_from_owners<Dim>(
+        bodies, grid, [](const Particle<Dim>&) { return n; },
+        [&](std::size_t b, std::span<double> out) {
+            std::size_t at = 0;
+            put(out, at, bodies[b].force, Dim);
+            for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
+                out[at++] = angular_entry<Dim>(bodies[b].torque, i);
+            }
+        },
+        [&](std::size_t b, std::span<const double> in) {
+            std::size_t at = 0;
+            take(in, at, bodies[b].force, Dim);
+            for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
+                angular_entry<Dim>(bodies[b].torque, i) = in[at++];
+            }
+        });
+}
+
+template <int Dim>
+void share_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid)
+{
+    share_from_owners<Dim>(
+        bodies, grid,
+        [](const Particle<Dim>& body) { return 3 * Dim * body.coupling.markers.size(); },
+        [&](std::size_t b, std::span<double> out) {
+            MarkerCoupling<Dim>& c = bodies[b].coupling;
+            const std::size_t n = c.markers.size() * Dim;
+            std::size_t at = 0;
+            for (auto* values : {&c.fluid, &c.lambda, &c.lambda_star}) {
+                const std::span<double> v = flat_values<Dim>(*values);
+                std::copy(v.begin(), v.end(), out.begin() + static_cast<std::ptrdiff_t>(at));
+                at += n;
+            }
+        },
+        [&](std::size_t b, std::span<const double> in) {
+            MarkerCoupling<Dim>& c = bodies[b].coupling;
+            const std::size_t n = c.markers.size() * Dim;
+            std::size_t at = 0;
+            for (auto* values : {&c.fluid, &c.lambda, &c.lambda_star}) {
+                const std::span<double> v = flat_values<Dim>(*values);
+                std::copy_n(in.begin() + static_cast<std::ptrdiff_t>(at), n, v.begin());
+                at += n;
+            }
+        });
+}
+
+template class MarkerRoutes<2>;
+template class MarkerRoutes<3>;
+template void hand_over<2>(std::span<Particle<2>>, std::span<const int>, const MacGrid<2>&);
+template void hand_over<3>(std::span<Particle<3>>, std::span<const int>, const MacGrid<3>&);
+template void share_motion<2>(std::span<Particle<2>>, std::span<RigidVelocity<2>>,
+                              const MacGrid<2>&);
+template void share_motion<3>(std::span<Particle<3>>, std::span<RigidVelocity<3>>,
+                              const MacGrid<3>&);
+template void share_loads<2>(std::span<Particle<2>>, const MacGrid<2>&);
+template void share_loads<3>(std::span<Particle<3>>, const MacGrid<3>&);
+template void share_markers<2>(std::span<Particle<2>>, const MacGrid<2>&);
+template void share_markers<3>(std::span<Particle<3>>, const MacGrid<3>&);
+
+} // namespace fddem
