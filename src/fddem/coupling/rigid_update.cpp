@@ -145,11 +145,12 @@ void spread_correction(const Particle<Dim>& body, const MacGrid<Dim>& grid,
 /// Before eq. (16)'s spreading into `u`: the ghosts zeroed, so that they collect only what is
 /// spread (periodic and rank ghosts; with coupling.adjoint_at_walls the walls' too).
 template <int Dim>
-void begin_spreading(const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
+void begin_spreading(const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u,
+                     const Box<Dim>* window = nullptr)
 {
     HaloExchange<Dim>(grid).zero_ghosts(u);
     if (s.adjoint_walls != nullptr) {
-        zero_wall_ghosts(grid, *s.adjoint_walls, u);
+        zero_wall_ghosts(grid, *s.adjoint_walls, u, window);
     }
 }
 
@@ -157,7 +158,8 @@ void begin_spreading(const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s
 /// of (walls' first with coupling.adjoint_at_walls, the transpose of the fill running in the
 /// reverse order), then the ghosts filled again, so that the next I(u) reads the correction.
 template <int Dim>
-void end_spreading(const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
+void end_spreading(const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u,
+                   const Box<Dim>* window = nullptr)
 {
     const HaloExchange<Dim> halo(grid);
     if (s.adjoint_walls == nullptr) {
@@ -165,9 +167,9 @@ void end_spreading(const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, 
         halo.fill(u);
         return;
     }
-    fold_wall_ghosts(grid, *s.adjoint_walls, u);
+    fold_wall_ghosts(grid, *s.adjoint_walls, u, window);
     halo.accumulate(u);
-    fill_velocity_ghosts(grid, *s.adjoint_walls, u);
+    fill_velocity_ghosts(grid, *s.adjoint_walls, u, window);
 }
 
 /// The end of a body's update: λ* ← λ, and U, ω take their new values.
@@ -177,6 +179,29 @@ void finish_update(Particle<Dim>& body, const RigidVelocity<Dim>& motion)
     body.coupling.lambda_star = body.coupling.lambda;
     body.velocity = motion.velocity;
     body.omega = motion.omega;
+}
+
+/// Whether the spreading of a body with markers at `positions` can touch a ghost beyond a side
+/// that is not periodic, or a face whose value such a ghost is filled from: a marker closer to
+/// that side than the kernel's reach plus the ghost layers (and one more for the face on the
+/// side). Decided from the positions alone, so alike on every rank of a split grid.
+template <int Dim, class Kernel>
+bool reaches_boundary_ghosts(const MacGrid<Dim>& grid, std::span<const Vec<Dim>> positions)
+{
+    const PeriodicDomain<Dim> domain = grid.domain();
+    for (int d = 0; d < Dim; ++d) {
+        if (domain.periodic(d)) {
+            continue;
+        }
+        const double reach = (Kernel::half_width + MacGrid<Dim>::n_ghost + 1) * grid.spacing()[d];
+        for (const Vec<Dim>& x : positions) {
+            if (x[d] - domain.origin[d] < reach ||
+                domain.origin[d] + domain.length[d] - x[d] < reach) {
+                return true;
+            }
+        }
+    }
+    return false;
 }
 
 /// coupling.body_sweep = "sequential": one body after the other, each reading the fluid as the
@@ -193,9 +218,21 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
     // to the faces on the other side (zeroed first, then accumulated onto their owners) and are
     // filled again, so that the next body's I(u) reads this body's correction there as well.
     // On a split grid the accumulation adds the halo's share to the neighbours' faces.
-    begin_spreading(grid, s, u);
-    spread_correction<Dim, Kernel>(body, grid, s, u);
-    end_spreading(grid, s, u);
+    // With coupling.adjoint_at_walls, a body whose spreading reaches neither a wall's ghosts nor
+    // the faces they are filled from leaves them as they are: zeroing, folding and filling them
+    // again would give them back their values, at the cost of a pass over every side for each
+    // body (measured: 8.5 times the step of the 200-sphere soak, docs/method.md §4).
+    // One that reaches them has only the part of each side beside its markers zeroed, folded
+    // and filled (support_window): the rest of the side keeps the values a whole fill gives.
+    RigidUpdateSettings<Dim> local = s;
+    if (local.adjoint_walls != nullptr &&
+        !reaches_boundary_ghosts<Dim, Kernel>(grid, body.coupling.positions)) {
+        local.adjoint_walls = nullptr;
+    }
+    const Box<Dim> window = support_window<Dim, Kernel>(grid, body.coupling.positions);
+    begin_spreading(grid, local, u, &window);
+    spread_correction<Dim, Kernel>(body, grid, local, u);
+    end_spreading(grid, local, u, &window);
     finish_update(body, motion);
     return defect;
 }

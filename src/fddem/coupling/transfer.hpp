@@ -11,6 +11,10 @@
 #include "fddem/coupling/delta_kernel.hpp"
 #include "fddem/grid/fields.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <span>
+
 namespace fddem {
 
 /// True if the support of Kernel around x fits in `box` (of the grid's indices) for every
@@ -58,6 +62,49 @@ void spread_vector(const MacGrid<Dim>& grid, FaceField<Dim>& u, const Vec<Dim>& 
     for (int a = 0; a < Dim; ++a) {
         spread_component<Dim, Kernel>(grid, u[a], a, x, f[a] * scale);
     }
+}
+
+/// The part of this rank's storage box that the spreading of markers at `positions`, and the
+/// boundary ghosts filled from what it changes, can reach: the cells of the kernel supports,
+/// grown by one cell, and along an axis whose side it comes within the ghost fill's reach of
+/// (the ghost layers and the two interior rows a ghost is filled from), out to the storage's
+/// end, so that the ghosts of edges and corners, filled from other sides' ghosts, are in it.
+/// Along a periodic axis the whole extent. (A rank's halo needs nothing more: the neighbour
+/// whose faces receive what was spread into the halo finds them in its own window.)
+template <int Dim, class Kernel>
+[[nodiscard]] Box<Dim> support_window(const MacGrid<Dim>& grid, std::span<const Vec<Dim>> positions)
+{
+    const Box<Dim> storage = grid.storage_box();
+    Box<Dim> window = storage;
+    if (positions.empty()) {
+        return window;
+    }
+    for (int d = 0; d < Dim; ++d) {
+        const auto ax = static_cast<std::size_t>(d);
+        if (grid.is_periodic(d)) {
+            continue; // what is spread across the seam lands at the other end: all of it
+        }
+        double low = positions.front()[d];
+        double high = low;
+        for (const Vec<Dim>& x : positions) {
+            low = std::min(low, x[d]);
+            high = std::max(high, x[d]);
+        }
+        const double h = grid.spacing()[d];
+        const int reach = Kernel::half_width + 1;
+        int lo = static_cast<int>(std::floor((low - grid.origin()[d]) / h)) - reach;
+        int hi = static_cast<int>(std::floor((high - grid.origin()[d]) / h)) + reach + 1;
+        const int fill_reach = MacGrid<Dim>::n_ghost + 3;
+        if (lo <= fill_reach) {
+            lo = storage.lo[ax];
+        }
+        if (hi >= grid.cells(d) - fill_reach) {
+            hi = storage.hi[ax];
+        }
+        window.lo[ax] = std::clamp(lo, storage.lo[ax], storage.hi[ax]);
+        window.hi[ax] = std::clamp(hi, window.lo[ax], storage.hi[ax]);
+    }
+    return window;
 }
 
 } // namespace fddem

@@ -10,11 +10,11 @@
 namespace fddem {
 namespace {
 
-/// The storage box with axis `axis` restricted to [lo, hi).
+/// `window` (the storage box, or a part of it) with axis `axis` restricted to [lo, hi).
 template <int Dim>
-Box<Dim> slab(const MacGrid<Dim>& grid, int axis, int lo, int hi)
+Box<Dim> slab(const Box<Dim>& window, int axis, int lo, int hi)
 {
-    Box<Dim> box = grid.storage_box();
+    Box<Dim> box = window;
     box.lo[static_cast<std::size_t>(axis)] = lo;
     box.hi[static_cast<std::size_t>(axis)] = hi;
     return box;
@@ -65,7 +65,7 @@ struct SideRows {
 };
 
 template <int Dim>
-SideRows<Dim> side_rows(const MacGrid<Dim>& grid, int axis, int side)
+SideRows<Dim> side_rows(const MacGrid<Dim>& grid, int axis, int side, const Box<Dim>& window)
 {
     const Box<Dim> storage = grid.storage_box();
     const auto ax = static_cast<std::size_t>(axis);
@@ -75,12 +75,14 @@ SideRows<Dim> side_rows(const MacGrid<Dim>& grid, int axis, int side)
     r.n = n;
     r.face = low ? 0 : n;
     r.normal_ghosts =
-        low ? slab(grid, axis, storage.lo[ax], 0) : slab(grid, axis, n + 1, storage.hi[ax]);
+        low ? slab(window, axis, storage.lo[ax], 0) : slab(window, axis, n + 1, storage.hi[ax]);
     r.first = low ? 0 : n - 1;
     r.second = low ? 1 : n - 2;
     r.ghost = low ? -1 : n;
-    r.outer = low ? slab(grid, axis, storage.lo[ax], -1) : slab(grid, axis, n + 1, storage.hi[ax]);
-    r.all_ghosts = low ? slab(grid, axis, storage.lo[ax], 0) : slab(grid, axis, n, storage.hi[ax]);
+    r.outer =
+        low ? slab(window, axis, storage.lo[ax], -1) : slab(window, axis, n + 1, storage.hi[ax]);
+    r.all_ghosts =
+        low ? slab(window, axis, storage.lo[ax], 0) : slab(window, axis, n, storage.hi[ax]);
     return r;
 }
 
@@ -88,16 +90,16 @@ SideRows<Dim> side_rows(const MacGrid<Dim>& grid, int axis, int side)
 /// which set_outflow_velocity sets) and the ghost faces beyond it.
 template <int Dim>
 void fill_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
-                      int side, GridArray<Dim>& ua)
+                      int side, GridArray<Dim>& ua, const Box<Dim>& window)
 {
     if (!grid.touches_side(axis, side)) {
         return; // an inner block side: its ghosts come from the halo exchange
     }
     const auto ax = static_cast<std::size_t>(axis);
-    const SideRows<Dim> rows = side_rows(grid, axis, side);
+    const SideRows<Dim> rows = side_rows(grid, axis, side, window);
     const BoundaryKind kind = bc.side_kind(axis, side);
     const int face = rows.face;
-    const Box<Dim> face_slab = slab(grid, axis, face, face + 1);
+    const Box<Dim> face_slab = slab(window, axis, face, face + 1);
     if (kind == BoundaryKind::wall) {
         const double wall = bc.wall(axis, side)[axis];
         for_each_index(face_slab, [&](const Index<Dim>& i) { ua(i) = wall; });
@@ -118,13 +120,13 @@ void fill_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
 /// Tangential component on `side` of `axis`: the ghosts across that side.
 template <int Dim>
 void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
-                          int side, int component, GridArray<Dim>& ua)
+                          int side, int component, GridArray<Dim>& ua, const Box<Dim>& window)
 {
     if (!grid.touches_side(axis, side)) {
         return;
     }
     const auto ax = static_cast<std::size_t>(axis);
-    const SideRows<Dim> rows = side_rows(grid, axis, side);
+    const SideRows<Dim> rows = side_rows(grid, axis, side, window);
     const int first = rows.first;
     const int second = rows.second;
     const int ghost = rows.ghost;
@@ -136,7 +138,7 @@ void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
     // Wall or inflow (whose tangential velocity is zero): the first ghost continues the
     // quadratic through the wall value and two interior values; further ghosts are odd images.
     const double wall = bc.wall(axis, side)[component];
-    for_each_index(slab(grid, axis, ghost, ghost + 1), [&](const Index<Dim>& i) {
+    for_each_index(slab(window, axis, ghost, ghost + 1), [&](const Index<Dim>& i) {
         ua(i) =
             (8.0 * wall - 6.0 * ua(with_axis(i, axis, first)) + ua(with_axis(i, axis, second))) /
             3.0;
@@ -150,13 +152,13 @@ void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
 /// filled from the interior): each ghost's value goes to the entry it is filled from.
 template <int Dim>
 void fold_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
-                      int side, GridArray<Dim>& fa)
+                      int side, GridArray<Dim>& fa, const Box<Dim>& window)
 {
     if (!grid.touches_side(axis, side)) {
         return;
     }
     const auto ax = static_cast<std::size_t>(axis);
-    const SideRows<Dim> rows = side_rows(grid, axis, side);
+    const SideRows<Dim> rows = side_rows(grid, axis, side, window);
     const int face = rows.face;
     const bool is_outflow = bc.side_kind(axis, side) == BoundaryKind::outflow;
     for_each_index(rows.normal_ghosts, [&](const Index<Dim>& i) {
@@ -173,13 +175,13 @@ void fold_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
 /// The transpose of fill_tangential_side, in the reverse order of its fill.
 template <int Dim>
 void fold_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int axis,
-                          int side, GridArray<Dim>& fa)
+                          int side, GridArray<Dim>& fa, const Box<Dim>& window)
 {
     if (!grid.touches_side(axis, side)) {
         return;
     }
     const auto ax = static_cast<std::size_t>(axis);
-    const SideRows<Dim> rows = side_rows(grid, axis, side);
+    const SideRows<Dim> rows = side_rows(grid, axis, side, window);
     const int first = rows.first;
     const int second = rows.second;
     const int ghost = rows.ghost;
@@ -194,7 +196,7 @@ void fold_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
         fa(with_axis(i, axis, rows.tangential_mirror(i[ax]))) -= fa(i);
         fa(i) = 0.0;
     });
-    for_each_index(slab(grid, axis, ghost, ghost + 1), [&](const Index<Dim>& i) {
+    for_each_index(slab(window, axis, ghost, ghost + 1), [&](const Index<Dim>& i) {
         fa(with_axis(i, axis, first)) += -2.0 * fa(i);
         fa(with_axis(i, axis, second)) += fa(i) / 3.0;
         fa(i) = 0.0;
@@ -222,9 +224,10 @@ double inflow_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& 
 
 template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                          FaceField<Dim>& u)
+                          FaceField<Dim>& u, const Box<Dim>* window)
 {
     check_periodic_axes(grid, bc);
+    const Box<Dim> box = window != nullptr ? *window : grid.storage_box();
     // Periodic images first, then the walled sides over the whole storage extent of the other
     // axes (the values are those of filling axis by axis in any order: a wall's ghosts depend
     // only on their own row, which a periodic image repeats).
@@ -237,9 +240,9 @@ void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
             GridArray<Dim>& ua = u[a];
             for (int side = 0; side < 2; ++side) {
                 if (a == d) {
-                    fill_normal_side(grid, bc, d, side, ua);
+                    fill_normal_side(grid, bc, d, side, ua, box);
                 } else {
-                    fill_tangential_side(grid, bc, d, side, a, ua);
+                    fill_tangential_side(grid, bc, d, side, a, ua, box);
                 }
             }
         }
@@ -248,9 +251,10 @@ void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
 
 template <int Dim>
 void zero_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                      FaceField<Dim>& f)
+                      FaceField<Dim>& f, const Box<Dim>* window)
 {
     check_periodic_axes(grid, bc);
+    const Box<Dim> box = window != nullptr ? *window : grid.storage_box();
     for (int d = 0; d < Dim; ++d) {
         if (bc.periodic(d)) {
             continue;
@@ -259,7 +263,7 @@ void zero_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
             if (!grid.touches_side(d, side)) {
                 continue;
             }
-            const SideRows<Dim> rows = side_rows(grid, d, side);
+            const SideRows<Dim> rows = side_rows(grid, d, side, box);
             for (int a = 0; a < Dim; ++a) {
                 // The normal component's ghosts start beyond its boundary face, the others' at
                 // once.
@@ -273,9 +277,10 @@ void zero_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
 
 template <int Dim>
 void fold_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                      FaceField<Dim>& f)
+                      FaceField<Dim>& f, const Box<Dim>* window)
 {
     check_periodic_axes(grid, bc);
+    const Box<Dim> box = window != nullptr ? *window : grid.storage_box();
     // fill_velocity_ghosts goes axis by axis, component by component, low side then high,
     // each step over the whole storage extent of the other axes (edges and corners included);
     // its transpose goes through the same steps in the reverse order.
@@ -286,9 +291,9 @@ void fold_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
         for (int a = Dim - 1; a >= 0; --a) {
             for (int side = 1; side >= 0; --side) {
                 if (a == d) {
-                    fold_normal_side(grid, bc, d, side, f[a]);
+                    fold_normal_side(grid, bc, d, side, f[a], box);
                 } else {
-                    fold_tangential_side(grid, bc, d, side, f[a]);
+                    fold_tangential_side(grid, bc, d, side, f[a], box);
                 }
             }
         }
@@ -360,7 +365,7 @@ double set_outflow_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<D
             GridArray<Dim>& ud = u[d];
             for_each_index(boundary_faces(grid, d, side),
                            [&](const Index<Dim>& i) { ud(i) += outward * correction; });
-            fill_normal_side(grid, bc, d, side, ud);
+            fill_normal_side(grid, bc, d, side, ud, grid.storage_box());
         }
     }
     return correction;
@@ -380,21 +385,21 @@ void fill_cell_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
             continue;
         }
         if (grid.touches_side(d, 0)) {
-            for_each_index(slab(grid, d, storage.lo[ax], 0),
+            for_each_index(slab(grid.storage_box(), d, storage.lo[ax], 0),
                            [&](const Index<Dim>& i) { phi(i) = phi(with_axis(i, d, -1 - i[ax])); });
         }
         if (grid.touches_side(d, 1)) {
-            for_each_index(slab(grid, d, n, storage.hi[ax]), [&](const Index<Dim>& i) {
-                phi(i) = phi(with_axis(i, d, 2 * n - 1 - i[ax]));
-            });
+            for_each_index(
+                slab(grid.storage_box(), d, n, storage.hi[ax]),
+                [&](const Index<Dim>& i) { phi(i) = phi(with_axis(i, d, 2 * n - 1 - i[ax])); });
         }
     }
 }
 
 template void fill_velocity_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
-                                      FaceField<2>&);
+                                      FaceField<2>&, const Box<2>*);
 template void fill_velocity_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
-                                      FaceField<3>&);
+                                      FaceField<3>&, const Box<3>*);
 template double inflow_velocity<2>(const MacGrid<2>&, const BoundaryConditions<2>&, int, int,
                                    const Vec<2>&) noexcept;
 template double inflow_velocity<3>(const MacGrid<3>&, const BoundaryConditions<3>&, int, int,
@@ -403,10 +408,14 @@ template double set_outflow_velocity<2>(const MacGrid<2>&, const BoundaryConditi
                                         FaceField<2>&);
 template double set_outflow_velocity<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
                                         FaceField<3>&);
-template void zero_wall_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&, FaceField<2>&);
-template void zero_wall_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&, FaceField<3>&);
-template void fold_wall_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&, FaceField<2>&);
-template void fold_wall_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&, FaceField<3>&);
+template void zero_wall_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&, FaceField<2>&,
+                                  const Box<2>*);
+template void zero_wall_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&, FaceField<3>&,
+                                  const Box<3>*);
+template void fold_wall_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&, FaceField<2>&,
+                                  const Box<2>*);
+template void fold_wall_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&, FaceField<3>&,
+                                  const Box<3>*);
 template std::array<double, 2> boundary_fluxes<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
                                                   const FaceField<2>&);
 template std::array<double, 2> boundary_fluxes<3>(const MacGrid<3>&, const BoundaryConditions<3>&,

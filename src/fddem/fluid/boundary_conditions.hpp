@@ -111,7 +111,12 @@ template <int Dim>
 /// outflow faces themselves are left as set_outflow_velocity() set them.
 template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                          FaceField<Dim>& u);
+                          FaceField<Dim>& u, const Box<Dim>* window = nullptr);
+
+/// `window` (fill_velocity_ghosts, zero_wall_ghosts, fold_wall_ghosts): if given, only the
+/// ghosts and boundary faces within it along the sides' tangential axes (a part of the storage
+/// box; along the normal axis every ghost row is taken), for a change confined to it (a body's
+/// spreading: coupling/rigid_update.cpp). The periodic and rank ghosts are filled whole.
 
 /// Zeroes the ghosts across the non-periodic sides of every velocity component (those that
 /// fill_velocity_ghosts fills from the boundary conditions); periodic and rank ghosts are the
@@ -119,7 +124,7 @@ void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
 /// values, so that they hold only what was spread.
 template <int Dim>
 void zero_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                      FaceField<Dim>& f);
+                      FaceField<Dim>& f, const Box<Dim>* window = nullptr);
 
 /// The transpose of fill_velocity_ghosts at the non-periodic sides: what was spread into a ghost
 /// there is added to the entries that ghost is filled from, with the fill's own coefficients,
@@ -133,7 +138,7 @@ void zero_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
 /// the exchange first, so its transpose runs it last).
 template <int Dim>
 void fold_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
-                      FaceField<Dim>& f);
+                      FaceField<Dim>& f, const Box<Dim>* window = nullptr);
 
 /// The inflow's normal velocity component at a point `x` of the boundary face (axis, side),
 /// signed along +axis (into the box: positive on the low side, negative on the high side).

@@ -30,7 +30,7 @@ constexpr int n_cells = 8; // h = 1/8 on the unit box
 /// Periodic along axis 0; axis 1 a wall below and an outflow above; in 3D axis 2 an inflow
 /// (at rest, so that the fill is linear) below and a wall above: every kind of side.
 template <int Dim>
-std::pair<MacGrid<Dim>, BoundaryConditions<Dim>> mixed_box()
+std::pair<MacGrid<Dim>, BoundaryConditions<Dim>> mixed_box(int n = n_cells)
 {
     BoundaryConditions<Dim> bc = BoundaryConditions<Dim>::closed_box();
     bc.is_periodic[0] = true;
@@ -39,7 +39,7 @@ std::pair<MacGrid<Dim>, BoundaryConditions<Dim>> mixed_box()
         bc.kind[2][0] = BoundaryKind::inflow;
     }
     Index<Dim> cells{};
-    cells.fill(n_cells);
+    cells.fill(n);
     return {MacGrid<Dim>(cells, Vec<Dim>::Zero(), Vec<Dim>::Ones(), bc.is_periodic), bc};
 }
 
@@ -107,6 +107,64 @@ TYPED_TEST(WallFold, IsTheTransposeOfTheGhostFill)
     // And a wall's ghosts are left at zero, for the next spreading.
     const Index<Dim> below = with_axis(Index<Dim>{}, 1, -1);
     EXPECT_EQ(folded[0](below), 0.0);
+}
+
+TYPED_TEST(WallFold, OnlyTheWindowAroundTheMarkersGivesTheWholeSidesResult)
+{
+    // The sequential sweep zeroes, folds and fills the sides only within support_window of a
+    // body's markers (coupling/rigid_update.cpp): for markers beside a wall, in a corner,
+    // beside the outflow and far from every side, the spreading of eq. (16) must leave every
+    // stored entry as the whole sides' zero, fold and fill do, bit for bit.
+    constexpr int Dim = TypeParam::value;
+    using Kernel = Peskin4Kernel;
+    const auto [grid, bc] = mixed_box<Dim>(24);
+    std::mt19937 rng(11);
+    FaceField<Dim> u = random_field(grid, rng);
+    fill_velocity_ghosts(grid, bc, u); // a field as a step leaves it
+    std::uniform_real_distribution<double> offset(-0.06, 0.06);
+    std::uniform_real_distribution<double> force(-1.0, 1.0);
+    std::vector<Vec<Dim>> centres{Vec<Dim>::Constant(0.5), Vec<Dim>::Constant(0.5),
+                                  Vec<Dim>::Constant(0.5), Vec<Dim>::Constant(0.04)};
+    centres[1][1] = 0.03;  // beside the wall below
+    centres[2][1] = 0.985; // beside the outflow above
+    int n_windowed = 0;    // clusters whose window is smaller than the storage
+    for (const Vec<Dim>& centre : centres) {
+        std::vector<Vec<Dim>> positions(10);
+        std::vector<Vec<Dim>> forces(positions.size());
+        for (std::size_t m = 0; m < positions.size(); ++m) {
+            for (int d = 0; d < Dim; ++d) {
+                positions[m][d] = std::clamp(centre[d] + offset(rng), 0.001, 0.999);
+                forces[m][d] = force(rng);
+            }
+        }
+        const Box<Dim> window = support_window<Dim, Kernel>(grid, positions);
+        n_windowed += window.size() < grid.storage_box().size() ? 1 : 0;
+        FaceField<Dim> whole = u;
+        FaceField<Dim> part = u;
+        zero_wall_ghosts(grid, bc, whole);
+        zero_wall_ghosts(grid, bc, part, &window);
+        for (std::size_t m = 0; m < positions.size(); ++m) {
+            spread_vector<Dim, Kernel>(grid, whole, positions[m], forces[m], 0.01);
+            spread_vector<Dim, Kernel>(grid, part, positions[m], forces[m], 0.01);
+        }
+        fold_wall_ghosts(grid, bc, whole);
+        fold_wall_ghosts(grid, bc, part, &window);
+        HaloExchange<Dim>(grid).accumulate(whole);
+        HaloExchange<Dim>(grid).accumulate(part);
+        fill_velocity_ghosts(grid, bc, whole);
+        fill_velocity_ghosts(grid, bc, part, &window);
+        int n_different = 0;
+        int n_changed = 0;
+        for_each_index(grid.storage_box(), [&](const Index<Dim>& i) {
+            for (int a = 0; a < Dim; ++a) {
+                n_different += part[a](i) == whole[a](i) ? 0 : 1;
+                n_changed += whole[a](i) == u[a](i) ? 0 : 1;
+            }
+        });
+        EXPECT_EQ(n_different, 0) << "markers about " << centre.transpose();
+        EXPECT_GT(n_changed, 0);
+    }
+    EXPECT_GE(n_windowed, 2); // the window does leave parts of the sides out
 }
 
 TYPED_TEST(WallFold, ZeroedGhostsFoldNothingIntoTheFluid)
