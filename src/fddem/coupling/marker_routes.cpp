@@ -8,6 +8,12 @@
 namespace fddem {
 namespace {
 
+// Message tags of the marker routes, apart from every other exchange's on the grid's
+// communicator (the gather's 41 and 42, the halo exchange's).
+constexpr int tag_to_owners = 71;
+constexpr int tag_to_holders = 72;
+constexpr int tag_hand_over = 73;
+
 /// Makes some values of every body the owner's on every rank: each rank writes, for the bodies
 /// it owns, `size(body)` values by `pack`, and zeros for the others; the sum over the ranks then
 /// holds the owner's values exactly (x + 0 = x), read back by `unpack`.
@@ -163,7 +169,7 @@ std::vector<int> MarkerRoutes<Dim>::peers() const
 template <int Dim>
 void MarkerRoutes<Dim>::gather_at_owners(std::span<Particle<Dim>> bodies) const
 {
-    // Tag 41: the I(u) going to the owners (42 below: λ coming back).
+    // Tags of their own (grid/gather_storage.cpp and the halo exchange have theirs).
     std::vector<std::vector<double>> out(to_owners_.size());
     std::vector<Communicator::Outgoing> sends;
     for (std::size_t k = 0; k < to_owners_.size(); ++k) {
@@ -179,7 +185,7 @@ void MarkerRoutes<Dim>::gather_at_owners(std::span<Particle<Dim>> bodies) const
         in[k].resize(from_holders_[k].markers.size() * Dim);
         receives.push_back({from_holders_[k].rank, in[k]});
     }
-    ranks_->send_and_receive(sends, receives, 41);
+    ranks_->send_and_receive(sends, receives, tag_to_owners);
     for (std::size_t k = 0; k < from_holders_.size(); ++k) {
         std::size_t at = 0;
         for (const auto& [b, l] : from_holders_[k].markers) {
@@ -191,7 +197,7 @@ void MarkerRoutes<Dim>::gather_at_owners(std::span<Particle<Dim>> bodies) const
 template <int Dim>
 void MarkerRoutes<Dim>::return_to_holders(std::span<Particle<Dim>> bodies) const
 {
-    send_lambda<Dim>(bodies, *ranks_, from_holders_, to_owners_, 42);
+    send_lambda<Dim>(bodies, *ranks_, from_holders_, to_owners_, tag_to_holders);
 }
 
 template <int Dim>
@@ -237,7 +243,7 @@ void hand_over(std::span<Particle<Dim>> bodies, std::span<const int> previous_ow
     for (auto& [rank, link] : receives) {
         in.push_back(std::move(link));
     }
-    send_lambda<Dim>(bodies, ranks, out, in, 43);
+    send_lambda<Dim>(bodies, ranks, out, in, tag_hand_over);
 }
 
 template <int Dim>

@@ -69,9 +69,10 @@ private:
 };
 
 /// After the bodies moved and their markers were placed again: λ and λ* sent from each body's
-/// `previous_owners[b]` (which holds them whole) to its owner now, if another, and to the
-/// ranks that now hold markers they did not (so that the next steps' spreading and eqs.
-/// (13)–(15) read the values one process would).
+/// `previous_owners[b]` (which holds them whole) to its owner now, if another, and to every
+/// other rank that now holds some of its markers (so that the next steps' spreading and eqs.
+/// (13)–(15) read the values one process would). A holder that held the same markers before
+/// gets them again: sending only what changed hands is left to do.
 template <int Dim>
 void hand_over(std::span<Particle<Dim>> bodies, std::span<const int> previous_owners,
                const MacGrid<Dim>& grid);

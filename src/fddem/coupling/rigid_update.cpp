@@ -229,7 +229,9 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
         !reaches_boundary_ghosts<Dim, Kernel>(grid, body.coupling.positions)) {
         local.adjoint_walls = nullptr;
     }
-    const Box<Dim> window = support_window<Dim, Kernel>(grid, body.coupling.positions);
+    const Box<Dim> window = local.adjoint_walls != nullptr
+                                ? support_window<Dim, Kernel>(grid, body.coupling.positions)
+                                : grid.storage_box();
     begin_spreading(grid, local, u, &window);
     spread_correction<Dim, Kernel>(body, grid, local, u);
     end_spreading(grid, local, u, &window);

@@ -20,6 +20,19 @@ Box<Dim> slab(const Box<Dim>& window, int axis, int lo, int hi)
     return box;
 }
 
+/// Whether `window` reaches side `side` of `axis`, i.e. its ghost rows: only such a side is
+/// zeroed, folded or filled within a window. A side the window stops short of keeps its ghosts
+/// (they are filled from interior rows the window's change did not reach), and so do its edges
+/// and corners with other sides: filling those from one side within the window would write them
+/// in another order than the whole fill, whose last side wins.
+template <int Dim>
+bool reaches_side(const MacGrid<Dim>& grid, const Box<Dim>& window, int axis, int side)
+{
+    const Box<Dim> storage = grid.storage_box();
+    const auto ax = static_cast<std::size_t>(axis);
+    return side == 0 ? window.lo[ax] <= storage.lo[ax] : window.hi[ax] >= storage.hi[ax];
+}
+
 /// The grid and the boundary conditions must agree on the periodic axes: the grid's halo
 /// exchange fills the ghosts across them, the boundary conditions those across every other side.
 template <int Dim>
@@ -239,6 +252,9 @@ void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
         for (int a = 0; a < Dim; ++a) {
             GridArray<Dim>& ua = u[a];
             for (int side = 0; side < 2; ++side) {
+                if (!reaches_side(grid, box, d, side)) {
+                    continue;
+                }
                 if (a == d) {
                     fill_normal_side(grid, bc, d, side, ua, box);
                 } else {
@@ -260,7 +276,7 @@ void zero_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
             continue;
         }
         for (int side = 0; side < 2; ++side) {
-            if (!grid.touches_side(d, side)) {
+            if (!grid.touches_side(d, side) || !reaches_side(grid, box, d, side)) {
                 continue;
             }
             const SideRows<Dim> rows = side_rows(grid, d, side, box);
@@ -290,6 +306,9 @@ void fold_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
         }
         for (int a = Dim - 1; a >= 0; --a) {
             for (int side = 1; side >= 0; --side) {
+                if (!reaches_side(grid, box, d, side)) {
+                    continue;
+                }
                 if (a == d) {
                     fold_normal_side(grid, bc, d, side, f[a], box);
                 } else {

@@ -113,10 +113,11 @@ template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                           FaceField<Dim>& u, const Box<Dim>* window = nullptr);
 
-/// `window` (fill_velocity_ghosts, zero_wall_ghosts, fold_wall_ghosts): if given, only the
-/// ghosts and boundary faces within it along the sides' tangential axes (a part of the storage
-/// box; along the normal axis every ghost row is taken), for a change confined to it (a body's
-/// spreading: coupling/rigid_update.cpp). The periodic and rank ghosts are filled whole.
+/// `window` (fill_velocity_ghosts, zero_wall_ghosts, fold_wall_ghosts): if given (a part of
+/// the storage box), only the sides it reaches (out to the storage's end along their axis), and
+/// on those only the ghosts and boundary faces within it along the other axes: for a change
+/// confined to it (a body's spreading, coupling/rigid_update.cpp), the values of whole sides,
+/// bit for bit. The periodic and rank ghosts are filled whole.
 
 /// Zeroes the ghosts across the non-periodic sides of every velocity component (those that
 /// fill_velocity_ghosts fills from the boundary conditions); periodic and rank ghosts are the

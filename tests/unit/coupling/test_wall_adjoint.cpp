@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cstdint>
 #include <random>
 #include <type_traits>
 #include <vector>
@@ -109,62 +111,93 @@ TYPED_TEST(WallFold, IsTheTransposeOfTheGhostFill)
     EXPECT_EQ(folded[0](below), 0.0);
 }
 
+/// Spreads `forces` at `positions` into a copy of `u` with the wall adjoint's zero, fold and
+/// fill, over whole sides (window nullptr) or within a window.
+template <int Dim, class Kernel>
+FaceField<Dim> spread_with_adjoint(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                                   const FaceField<Dim>& u, const std::vector<Vec<Dim>>& positions,
+                                   const std::vector<Vec<Dim>>& forces, const Box<Dim>* window)
+{
+    FaceField<Dim> f = u;
+    zero_wall_ghosts(grid, bc, f, window);
+    for (std::size_t m = 0; m < positions.size(); ++m) {
+        spread_vector<Dim, Kernel>(grid, f, positions[m], forces[m], 0.01);
+    }
+    fold_wall_ghosts(grid, bc, f, window);
+    HaloExchange<Dim>(grid).accumulate(f);
+    fill_velocity_ghosts(grid, bc, f, window);
+    return f;
+}
+
 TYPED_TEST(WallFold, OnlyTheWindowAroundTheMarkersGivesTheWholeSidesResult)
 {
     // The sequential sweep zeroes, folds and fills the sides only within support_window of a
-    // body's markers (coupling/rigid_update.cpp): for markers beside a wall, in a corner,
-    // beside the outflow and far from every side, the spreading of eq. (16) must leave every
-    // stored entry as the whole sides' zero, fold and fill do, bit for bit.
+    // body's markers (coupling/rigid_update.cpp): for markers beside a wall, beside a moving lid,
+    // in edges and corners where two walls meet, beside the outflow and far from every side,
+    // the spreading of eq. (16) must leave every stored entry as the whole sides' zero, fold and
+    // fill do, bit for bit (signs of zero included). Two boxes: the mixed one (periodic along x)
+    // and a closed one whose lid (y high) and, in 3D, floor (z low) slide.
     constexpr int Dim = TypeParam::value;
     using Kernel = Peskin4Kernel;
-    const auto [grid, bc] = mixed_box<Dim>(24);
-    std::mt19937 rng(11);
-    FaceField<Dim> u = random_field(grid, rng);
-    fill_velocity_ghosts(grid, bc, u); // a field as a step leaves it
-    std::uniform_real_distribution<double> offset(-0.06, 0.06);
-    std::uniform_real_distribution<double> force(-1.0, 1.0);
-    std::vector<Vec<Dim>> centres{Vec<Dim>::Constant(0.5), Vec<Dim>::Constant(0.5),
-                                  Vec<Dim>::Constant(0.5), Vec<Dim>::Constant(0.04)};
-    centres[1][1] = 0.03;  // beside the wall below
-    centres[2][1] = 0.985; // beside the outflow above
-    int n_windowed = 0;    // clusters whose window is smaller than the storage
-    for (const Vec<Dim>& centre : centres) {
-        std::vector<Vec<Dim>> positions(10);
-        std::vector<Vec<Dim>> forces(positions.size());
-        for (std::size_t m = 0; m < positions.size(); ++m) {
-            for (int d = 0; d < Dim; ++d) {
-                positions[m][d] = std::clamp(centre[d] + offset(rng), 0.001, 0.999);
-                forces[m][d] = force(rng);
-            }
-        }
-        const Box<Dim> window = support_window<Dim, Kernel>(grid, positions);
-        n_windowed += window.size() < grid.storage_box().size() ? 1 : 0;
-        FaceField<Dim> whole = u;
-        FaceField<Dim> part = u;
-        zero_wall_ghosts(grid, bc, whole);
-        zero_wall_ghosts(grid, bc, part, &window);
-        for (std::size_t m = 0; m < positions.size(); ++m) {
-            spread_vector<Dim, Kernel>(grid, whole, positions[m], forces[m], 0.01);
-            spread_vector<Dim, Kernel>(grid, part, positions[m], forces[m], 0.01);
-        }
-        fold_wall_ghosts(grid, bc, whole);
-        fold_wall_ghosts(grid, bc, part, &window);
-        HaloExchange<Dim>(grid).accumulate(whole);
-        HaloExchange<Dim>(grid).accumulate(part);
-        fill_velocity_ghosts(grid, bc, whole);
-        fill_velocity_ghosts(grid, bc, part, &window);
-        int n_different = 0;
-        int n_changed = 0;
-        for_each_index(grid.storage_box(), [&](const Index<Dim>& i) {
-            for (int a = 0; a < Dim; ++a) {
-                n_different += part[a](i) == whole[a](i) ? 0 : 1;
-                n_changed += whole[a](i) == u[a](i) ? 0 : 1;
-            }
-        });
-        EXPECT_EQ(n_different, 0) << "markers about " << centre.transpose();
-        EXPECT_GT(n_changed, 0);
+    auto [mixed_grid, mixed_bc] = mixed_box<Dim>(24);
+    BoundaryConditions<Dim> closed = BoundaryConditions<Dim>::closed_box();
+    closed.wall_velocity[1][1][0] = 1.0;
+    if constexpr (Dim == 3) {
+        closed.wall_velocity[2][0][1] = -0.5;
     }
-    EXPECT_GE(n_windowed, 2); // the window does leave parts of the sides out
+    Index<Dim> cells{};
+    cells.fill(24);
+    const MacGrid<Dim> closed_grid(cells, Vec<Dim>::Zero(), Vec<Dim>::Ones());
+    std::vector<Vec<Dim>> centres(7, Vec<Dim>::Constant(0.5));
+    centres[1][1] = 0.03;                  // beside the wall below (mixed: a wall)
+    centres[2][1] = 0.975;                 // beside the lid, or the outflow
+    centres[3] = Vec<Dim>::Constant(0.04); // a corner
+    centres[4][0] = 0.96;                  // beside the wall at x high (mixed: the seam)
+    centres[5][Dim - 1] = 0.03;            // beside the last axis's low side
+    centres[6] = Vec<Dim>::Constant(0.5);  // an edge: x high, last axis low
+    centres[6][0] = 0.965;
+    centres[6][Dim - 1] = 0.035;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> offset(-0.05, 0.05);
+    std::uniform_real_distribution<double> force(-1.0, 1.0);
+    for (const bool is_closed : {false, true}) {
+        const MacGrid<Dim>& grid = is_closed ? closed_grid : mixed_grid;
+        const BoundaryConditions<Dim>& bc = is_closed ? closed : mixed_bc;
+        FaceField<Dim> u = random_field(grid, rng);
+        fill_velocity_ghosts(grid, bc, u); // a field as a step leaves it
+        int n_windowed = 0;                // clusters whose window is smaller than the storage
+        for (const Vec<Dim>& centre : centres) {
+            std::vector<Vec<Dim>> positions(10);
+            std::vector<Vec<Dim>> forces(positions.size());
+            for (std::size_t m = 0; m < positions.size(); ++m) {
+                for (int d = 0; d < Dim; ++d) {
+                    positions[m][d] = std::clamp(centre[d] + offset(rng), 0.001, 0.999);
+                    forces[m][d] = force(rng);
+                }
+            }
+            const Box<Dim> window = support_window<Dim, Kernel>(grid, positions);
+            n_windowed += window.size() < grid.storage_box().size() ? 1 : 0;
+            const FaceField<Dim> whole =
+                spread_with_adjoint<Dim, Kernel>(grid, bc, u, positions, forces, nullptr);
+            const FaceField<Dim> part =
+                spread_with_adjoint<Dim, Kernel>(grid, bc, u, positions, forces, &window);
+            int n_different = 0;
+            int n_changed = 0;
+            for_each_index(grid.storage_box(), [&](const Index<Dim>& i) {
+                for (int a = 0; a < Dim; ++a) {
+                    n_different += std::bit_cast<std::uint64_t>(part[a](i)) ==
+                                           std::bit_cast<std::uint64_t>(whole[a](i))
+                                       ? 0
+                                       : 1;
+                    n_changed += whole[a](i) == u[a](i) ? 0 : 1;
+                }
+            });
+            EXPECT_EQ(n_different, 0) << (is_closed ? "closed box" : "mixed box")
+                                      << ", markers about " << centre.transpose();
+            EXPECT_GT(n_changed, 0);
+        }
+        EXPECT_GE(n_windowed, 5); // the window does leave parts of the sides out
+    }
 }
 
 TYPED_TEST(WallFold, ZeroedGhostsFoldNothingIntoTheFluid)
