@@ -3,6 +3,7 @@
 
 #include "fddem/core/errors.hpp"
 
+#include <initializer_list>
 #include <map>
 
 namespace fddem {
@@ -63,35 +64,42 @@ void take(std::span<const double> in, std::size_t& at, Values& v, std::size_t n)
     }
 }
 
-/// λ and λ* of the markers of `sends` to their ranks, and of `receives` from theirs, into the
-/// bodies' records. Both sides list the same markers in the same order.
+/// The marker arrays a message carries, in this order for each marker.
 template <int Dim>
-void send_lambda(std::span<Particle<Dim>> bodies, const Communicator& ranks,
-                 std::span<const MarkerLink> sends, std::span<const MarkerLink> receives, int tag)
+using MarkerArrays = std::initializer_list<std::vector<Vec<Dim>> MarkerCoupling<Dim>::*>;
+
+/// `arrays` at the markers of `sends` to their ranks, and at those of `receives` from theirs,
+/// into the bodies' records: one message each way per rank. Both sides list the same markers in
+/// the same order.
+template <int Dim>
+void send_marker_values(std::span<Particle<Dim>> bodies, const Communicator& ranks,
+                        std::span<const MarkerLink> sends, std::span<const MarkerLink> receives,
+                        MarkerArrays<Dim> arrays, int tag)
 {
     std::vector<std::vector<double>> out(sends.size());
     std::vector<Communicator::Outgoing> messages;
     for (std::size_t k = 0; k < sends.size(); ++k) {
         for (const auto& [b, l] : sends[k].markers) {
-            const MarkerCoupling<Dim>& c = bodies[b].coupling;
-            out[k].insert(out[k].end(), c.lambda[l].data(), c.lambda[l].data() + Dim);
-            out[k].insert(out[k].end(), c.lambda_star[l].data(), c.lambda_star[l].data() + Dim);
+            for (const auto array : arrays) {
+                const Vec<Dim>& v = (bodies[b].coupling.*array)[l];
+                out[k].insert(out[k].end(), v.data(), v.data() + Dim);
+            }
         }
         messages.push_back({sends[k].rank, out[k]});
     }
     std::vector<std::vector<double>> in(receives.size());
     std::vector<Communicator::Incoming> slots;
     for (std::size_t k = 0; k < receives.size(); ++k) {
-        in[k].resize(receives[k].markers.size() * 2 * Dim);
+        in[k].resize(receives[k].markers.size() * arrays.size() * Dim);
         slots.push_back({receives[k].rank, in[k]});
     }
     ranks.send_and_receive(messages, slots, tag);
     for (std::size_t k = 0; k < receives.size(); ++k) {
         std::size_t at = 0;
         for (const auto& [b, l] : receives[k].markers) {
-            MarkerCoupling<Dim>& c = bodies[b].coupling;
-            take(in[k], at, c.lambda[l], Dim);
-            take(in[k], at, c.lambda_star[l], Dim);
+            for (const auto array : arrays) {
+                take(in[k], at, (bodies[b].coupling.*array)[l], Dim);
+            }
         }
     }
 }
@@ -107,6 +115,26 @@ double& angular_entry(AngularVec<Dim>& w, std::size_t i)
         return w;
     } else {
         return w[static_cast<Eigen::Index>(i)];
+    }
+}
+
+/// A body's vector and angular quantity (U and ω, or force and torque) into `out` from `at`.
+template <int Dim>
+void put_rigid(std::span<double> out, std::size_t& at, const Vec<Dim>& v, AngularVec<Dim> w)
+{
+    put(out, at, v, Dim);
+    for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
+        out[at++] = angular_entry<Dim>(w, i);
+    }
+}
+
+/// The reverse of put_rigid.
+template <int Dim>
+void take_rigid(std::span<const double> in, std::size_t& at, Vec<Dim>& v, AngularVec<Dim>& w)
+{
+    take(in, at, v, Dim);
+    for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
+        angular_entry<Dim>(w, i) = in[at++];
     }
 }
 
@@ -169,35 +197,16 @@ std::vector<int> MarkerRoutes<Dim>::peers() const
 template <int Dim>
 void MarkerRoutes<Dim>::gather_at_owners(std::span<Particle<Dim>> bodies) const
 {
-    // Tags of their own (grid/gather_storage.cpp and the halo exchange have theirs).
-    std::vector<std::vector<double>> out(to_owners_.size());
-    std::vector<Communicator::Outgoing> sends;
-    for (std::size_t k = 0; k < to_owners_.size(); ++k) {
-        for (const auto& [b, l] : to_owners_[k].markers) {
-            const Vec<Dim>& v = bodies[b].coupling.fluid[l];
-            out[k].insert(out[k].end(), v.data(), v.data() + Dim);
-        }
-        sends.push_back({to_owners_[k].rank, out[k]});
-    }
-    std::vector<std::vector<double>> in(from_holders_.size());
-    std::vector<Communicator::Incoming> receives;
-    for (std::size_t k = 0; k < from_holders_.size(); ++k) {
-        in[k].resize(from_holders_[k].markers.size() * Dim);
-        receives.push_back({from_holders_[k].rank, in[k]});
-    }
-    ranks_->send_and_receive(sends, receives, tag_to_owners);
-    for (std::size_t k = 0; k < from_holders_.size(); ++k) {
-        std::size_t at = 0;
-        for (const auto& [b, l] : from_holders_[k].markers) {
-            take(in[k], at, bodies[b].coupling.fluid[l], Dim);
-        }
-    }
+    send_marker_values<Dim>(bodies, *ranks_, to_owners_, from_holders_,
+                            {&MarkerCoupling<Dim>::fluid}, tag_to_owners);
 }
 
 template <int Dim>
 void MarkerRoutes<Dim>::return_to_holders(std::span<Particle<Dim>> bodies) const
 {
-    send_lambda<Dim>(bodies, *ranks_, from_holders_, to_owners_, tag_to_holders);
+    send_marker_values<Dim>(bodies, *ranks_, from_holders_, to_owners_,
+                            {&MarkerCoupling<Dim>::lambda, &MarkerCoupling<Dim>::lambda_star},
+                            tag_to_holders);
 }
 
 template <int Dim>
@@ -243,7 +252,9 @@ void hand_over(std::span<Particle<Dim>> bodies, std::span<const int> previous_ow
     for (auto& [rank, link] : receives) {
         in.push_back(std::move(link));
     }
-    send_lambda<Dim>(bodies, ranks, out, in, tag_hand_over);
+    send_marker_values<Dim>(bodies, ranks, out, in,
+                            {&MarkerCoupling<Dim>::lambda, &MarkerCoupling<Dim>::lambda_star},
+                            tag_hand_over);
 }
 
 template <int Dim>
@@ -255,18 +266,12 @@ void share_motion(std::span<Particle<Dim>> bodies, std::span<RigidVelocity<Dim>>
         bodies, grid, [](const Particle<Dim>&) { return n; },
         [&](std::size_t b, std::span<double> out) {
             std::size_t at = 0;
-            put(out, at, motions[b].velocity, Dim);
-            for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
-                out[at++] = angular_entry<Dim>(motions[b].omega, i);
-            }
+            put_rigid<Dim>(out, at, motions[b].velocity, motions[b].omega);
             out[at] = bodies[b].coupling.forcing_change;
         },
         [&](std::size_t b, std::span<const double> in) {
             std::size_t at = 0;
-            take(in, at, motions[b].velocity, Dim);
-            for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
-                angular_entry<Dim>(motions[b].omega, i) = in[at++];
-            }
+            take_rigid<Dim>(in, at, motions[b].velocity, motions[b].omega);
             bodies[b].coupling.forcing_change = in[at];
         });
 }
@@ -279,17 +284,11 @@ void share_loads(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid)
         bodies, grid, [](const Particle<Dim>&) { return n; },
         [&](std::size_t b, std::span<double> out) {
             std::size_t at = 0;
-            put(out, at, bodies[b].force, Dim);
-            for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
-                out[at++] = angular_entry<Dim>(bodies[b].torque, i);
-            }
+            put_rigid<Dim>(out, at, bodies[b].force, bodies[b].torque);
         },
         [&](std::size_t b, std::span<const double> in) {
             std::size_t at = 0;
-            take(in, at, bodies[b].force, Dim);
-            for (std::size_t i = 0; i < angular_size<Dim>; ++i) {
-                angular_entry<Dim>(bodies[b].torque, i) = in[at++];
-            }
+            take_rigid<Dim>(in, at, bodies[b].force, bodies[b].torque);
         });
 }
 
