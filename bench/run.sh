@@ -21,6 +21,15 @@
 #     to end with --3d full, and the fixed sphere at Re 20 for 20 steps: time per step, outer
 #     iterations per step, ns per cell and outer iteration, the share of each phase, peak memory
 #     per cell.
+#  6b. with --cube3d [R]: the fluid alone in 3D, side by side with OpenFOAM's icoFoam
+#     (shared/peers/openfoam-cavity/run3d.sh): the lid-driven cube, Re 100, Δt = 0.5/N, 50 steps,
+#     at 64³ and 128³, one thread each, R rounds (default 3) each running every row once in turn,
+#     so that each wall-time ratio is taken within a round (median over the rounds). fddem at
+#     simple.tolerance 1e-4 (as the 2D comparison) and at the default 1e-5. Then, at 64³ only,
+#     each code's time error: its centreline u at t = 50 Δt against its own run with Δt/4 (fddem's
+#     iterated to 1e-8), so that the ratio compares runs of like accuracy. Also the 3D pressure
+#     solve: FFTW's cosine transforms against hypre on the same cube (10 steps, pressure seconds
+#     per outer iteration). About 25 minutes with R = 3.
 #  7. with --mpi [P]: strong and weak scaling over MPI ranks p = 1, 2, 4, … ≤ P (default 4;
 #     issue 15), through `mpirun -n p fddem run` on the lid-driven cube (docs/examples/
 #     cavity3d.toml, Re 100, hypre, 10 steps): strong on 48³ cells, weak on 32³ cells per rank
@@ -33,7 +42,7 @@
 #  8. with --no-base: without the kernel and cavity tables (1-2), e.g. `--no-base --mpi 4`.
 # The kernel table includes contact detection (cell list vs brute force) for 1e3-1e5 disks.
 # Options: --openfoam [N] (default N = 256), --paper, --steady [R] (default R = 3 rounds),
-# --3d [full], --mpi [P] (default P = 4), --mpi-large, --no-base, --quick (smaller table),
+# --3d [full], --cube3d [R] (default R = 3 rounds), --mpi [P] (default P = 4), --mpi-large, --no-base, --quick (smaller table),
 # --threads T (default 1).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -44,6 +53,8 @@ openfoam_n=256
 paper=0
 three_d=0
 three_d_full=0
+cube3d=0
+cube3d_rounds=3
 steady=0
 steady_rounds=3
 mpi=0
@@ -58,6 +69,7 @@ while [ $# -gt 0 ]; do
         --quick) quick=1 ;;
         --paper) paper=1 ;;
         --3d) three_d=1; if [ "${2:-}" = full ]; then three_d_full=1; shift; fi ;;
+        --cube3d) cube3d=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then cube3d_rounds="$2"; shift; fi ;;
         --steady) steady=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then steady_rounds="$2"; shift; fi ;;
         --mpi) mpi=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then mpi_ranks="$2"; shift; fi ;;
         --mpi-large) mpi=1; mpi_large=1 ;;
@@ -159,6 +171,70 @@ if [ "$three_d" = 1 ]; then
         rows+=("$name:$dir")
     done
     $python "$here/table.py" three_d "${rows[@]}"
+fi
+
+if [ "$cube3d" = 1 ]; then
+    echo
+    echo "== the fluid alone in 3D, side by side with OpenFOAM icoFoam: lid-driven cube, Re 100,"
+    echo "   dt = 0.5/N, 50 steps, $cube3d_rounds round(s), one thread each"
+    peer="$(openfoam_peer)"
+    # run3d.sh deletes its case; this copy keeps it and writes U in ascii at the last step, for
+    # the time-error column. Each edit is checked, so that a changed peer script stops here.
+    kept="$peer/run3d_kept.sh"
+    sed -e 's/^CASE=\(.*\); trap .*$/CASE=\1; echo "case $CASE"/' \
+        -e 's/writeFormat binary/writeFormat ascii/' \
+        -e 's/writeInterval 1000000/writeInterval $STEPS/' "$peer/run3d.sh" >"$kept"
+    chmod +x "$kept"
+    for edit in 'echo "case $CASE"' 'writeFormat ascii' 'writeInterval $STEPS'; do
+        grep -qF "$edit" "$kept" || { echo "bench/run.sh: run3d.sh changed ($edit)" >&2; exit 1; }
+    done
+    dir="$out/cube3d"
+    rm -rf "$dir" && mkdir -p "$dir"
+    echo "round,n,row,wall_s" >"$dir/walls.csv"
+    cube=(docs/examples/cavity3d.toml --force -q --set output.field_interval=0
+          --set 'simple.fft_planning="measure"')
+    # One fddem row: the cube at N³ into $dir/n$2_$3, its whole process's wall clock appended.
+    cube_row() {
+        local round="$1" n="$2" row="$3"
+        shift 3
+        local start
+        start=$(date +%s.%N)
+        OMP_NUM_THREADS=1 "$fddem" run "${cube[@]}" -o "$dir/n${n}_$row" --set "domain.cells=[$n,$n,$n]" \
+            --set "time.dt=$($python -c "print(0.5/$n)")" \
+            --set "time.end=$($python -c "print(50*0.5/$n)")" "$@" >"$dir/n${n}_$row.log" 2>&1
+        awk -v a="$start" -v b="$(date +%s.%N)" -v r="$round,$n,$row" 'BEGIN { printf "%s,%.3f\n", r, b - a }' \
+            >>"$dir/walls.csv"
+    }
+    # One icoFoam row: its solver's wall clock (run3d.sh's own timing), the case kept as
+    # $dir/icofoam_n$2$3.
+    foam_row() {
+        local round="$1" n="$2" tag="$3"
+        shift 3
+        local line
+        line=$(cd "$peer" && OMP_NUM_THREADS=1 "$kept" "$n" 100 "$@")
+        rm -rf "$dir/icofoam_n$n$tag"
+        mv "$(sed -n 's/^case //p' <<<"$line")" "$dir/icofoam_n$n$tag"
+        echo "$round,$n,icofoam$tag,$(sed -n 's/.*wall_s=\([0-9.]*\).*/\1/p' <<<"$line")" >>"$dir/walls.csv"
+    }
+    for round in $(seq 1 "$cube3d_rounds"); do
+        for n in 64 128; do
+            cube_row "$round" "$n" tol1e-4 --set simple.tolerance=1e-4
+            cube_row "$round" "$n" tol1e-5
+            foam_row "$round" "$n" "" 50
+        done
+    done
+    # The time error at 64³: each code against itself at Δt/4 (200 steps), once.
+    cube_row 0 64 ref --set simple.tolerance=1e-8 --set simple.max_outer_iterations=200 \
+        --set time.dt=0.001953125
+    foam_row 0 64 _ref 200 0.001953125
+    # The pressure solve in 3D, the same cube: FFTW's direct solve against hypre.
+    for n in 64 128; do
+        for solver in fft hypre; do
+            "$fddem" run "${cube[@]}" -o "$dir/pressure_n${n}_$solver" --set "domain.cells=[$n,$n,$n]" \
+                --set time.max_steps=10 --set "simple.pressure_solver=$solver"
+        done
+    done
+    $python "$here/table.py" cube3d "$dir"
 fi
 
 if [ "$mpi" = 1 ]; then

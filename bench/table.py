@@ -87,6 +87,86 @@ def three_d_table(entries):
         )
 
 
+def read_icofoam_u(case_dir, n):
+    """u along the cube's vertical centre line x = z = 0.5 from icoFoam's ascii U at the last time
+    written: the mean of the four cells around the line, at the cell centres y = (j + 1/2)/n."""
+    times = [d for d in os.listdir(case_dir) if d != "0" and d.replace(".", "", 1).isdigit()]
+    with open(os.path.join(case_dir, max(times, key=float), "U")) as f:
+        text = f.read()
+    body = text[text.index("internalField"):]
+    count_at = body.index("List<vector>") + len("List<vector>")
+    opening = body.index("(", count_at)
+    count = int(body[count_at:opening])
+    values = body[opening + 1:].split(")", count)[:count]
+    u = [float(v.replace("(", " ").split()[0]) for v in values]
+    a, b = n // 2 - 1, n // 2
+    at = lambda i, j, k: u[i + n * j + n * n * k]
+    return [0.25 * (at(a, j, a) + at(b, j, a) + at(a, j, b) + at(b, j, b)) for j in range(n)]
+
+
+def read_fddem_u(run_dir, n):
+    """u along the same line from fddem's line sample (257 points), at the cell centres."""
+    with open(os.path.join(run_dir, "samples", "vertical_centerline.csv"), newline="") as f:
+        u = [float(r["u"]) for r in csv.DictReader(f)]
+    m = (len(u) - 1) // n
+    return [u[m * j + m // 2] for j in range(n)]
+
+
+def cube3d_table(cube_dir):
+    """The 3D cube side by side with icoFoam (bench/run.sh --cube3d): wall seconds (medians over
+    the rounds), the ratio within each round (median), outer iterations, and at 64³ each code's
+    time error; then the pressure solve, FFTW against hypre."""
+    walls = {}
+    with open(os.path.join(cube_dir, "walls.csv"), newline="") as f:
+        for r in csv.DictReader(f):
+            walls.setdefault((int(r["n"]), r["row"]), {})[int(r["round"])] = float(r["wall_s"])
+    print(f"{'cube':>5} {'code, setting':<26} {'wall s':>8} {'icoFoam/this':>12} {'outer/step':>10} "
+          f"{'time error at 64³':>17}")
+    for n in (64, 128):
+        foam = walls.get((n, "icofoam"), {})
+        error = {}
+        if n == 64 and (64, "icofoam_ref") in walls:
+            reference = read_icofoam_u(os.path.join(cube_dir, "icofoam_n64_ref"), 64)
+            error["icofoam"] = max_abs_difference(
+                read_icofoam_u(os.path.join(cube_dir, "icofoam_n64"), 64), reference)
+            reference = read_fddem_u(os.path.join(cube_dir, "n64_ref"), 64)
+            for row in ("tol1e-4", "tol1e-5"):
+                error[row] = max_abs_difference(
+                    read_fddem_u(os.path.join(cube_dir, f"n64_{row}"), 64), reference)
+        for row, label in (("icofoam", "icoFoam, PISO 2 correctors"),
+                           ("tol1e-4", "fddem, tolerance 1e-4"),
+                           ("tol1e-5", "fddem, tolerance 1e-5")):
+            times = walls.get((n, row), {})
+            if not times:
+                continue
+            ratios = [foam[k] / times[k] for k in times if k in foam]
+            outer = "–"
+            if row != "icofoam":
+                steps, _, _, total, _ = run_costs(os.path.join(cube_dir, f"n{n}_{row}"))
+                outer = f"{total / steps:.2f}"
+            err = f"{error[row]:.2e}" if row in error else "–"
+            print(f"{n:>4}³ {label:<26} {statistics.median(times.values()):>8.2f} "
+                  f"{statistics.median(ratios):>12.2f} {outer:>10} {err:>17}")
+    print()
+    print(f"{'cube':>5} {'pressure solver':<16} {'outer its':>9} {'pressure s':>10} "
+          f"{'ms per outer':>12} {'hypre/fft':>9}")
+    for n in (64, 128):
+        per = {}
+        for solver in ("fft", "hypre"):
+            run_dir = os.path.join(cube_dir, f"pressure_n{n}_{solver}")
+            if not os.path.isdir(run_dir):
+                continue
+            steps, _, phases, outer, _ = run_costs(run_dir)
+            per[solver] = phases.get("pressure", 0) / outer
+            ratio = f"{per[solver] / per['fft']:.2f}" if "fft" in per else "–"
+            print(f"{n:>4}³ {solver:<16} {outer:>9} {phases.get('pressure', 0):>10.2f} "
+                  f"{1e3 * per[solver]:>12.1f} {ratio:>9}")
+
+
+def max_abs_difference(a, b):
+    return max(abs(p - q) for p, q in zip(a, b))
+
+
 def mpi_table(cores, entries):
     """Strong and weak scaling rows (kind:ranks:run_dir), each against its one-rank row."""
     cores = int(cores)
@@ -422,7 +502,7 @@ def steady_table(steady_dir, peer_results, cases_dir):
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("mode", choices=["cavity", "openfoam", "ghia", "paper", "steady", "three_d",
-                                         "mpi"])
+                                         "mpi", "cube3d"])
     parser.add_argument("args", nargs="+")
     options = parser.parse_args()
     if options.mode == "cavity":
@@ -437,6 +517,8 @@ def main():
         mpi_table(options.args[0], options.args[1:])
     elif options.mode == "steady":
         steady_table(*options.args)
+    elif options.mode == "cube3d":
+        cube3d_table(options.args[0])
     else:
         openfoam_table(*options.args)
     return 0

@@ -20,6 +20,22 @@ Box<Dim> slab(const Box<Dim>& window, int axis, int lo, int hi)
     return box;
 }
 
+/// Calls f(o, x) for every point of `box`: o its offset in the grid's storage, x its index along
+/// `axis`. A ghost fill reads the entries at o + (m − x)·stride(axis) for the rows m it is filled
+/// from, so the rows along axis 0 run with unit stride and without an index computation per point
+/// (a per-point Index cost 10–15 % of a 3D fluid step in the ghost fills alone).
+template <int Dim, class F>
+void for_each_offset(const MacGrid<Dim>& grid, const Box<Dim>& box, int axis, F&& f)
+{
+    for_each_row(box, [&](const Index<Dim>& row) {
+        const std::ptrdiff_t base = grid.offset(row) - box.lo[0];
+        const int across = row[static_cast<std::size_t>(axis)];
+        for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+            f(base + i, axis == 0 ? i : across);
+        }
+    });
+}
+
 /// Whether `window` reaches side `side` of `axis`, i.e. its ghost rows: only such a side is
 /// zeroed, folded or filled within a window. A side the window stops short of keeps its ghosts
 /// (they are filled from interior rows the window's change did not reach), and so do its edges
@@ -108,25 +124,25 @@ void fill_normal_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
     if (!grid.touches_side(axis, side)) {
         return; // an inner block side: its ghosts come from the halo exchange
     }
-    const auto ax = static_cast<std::size_t>(axis);
     const SideRows<Dim> rows = side_rows(grid, axis, side, window);
     const BoundaryKind kind = bc.side_kind(axis, side);
     const int face = rows.face;
     const Box<Dim> face_slab = slab(window, axis, face, face + 1);
+    double* a = ua.data();
+    const std::ptrdiff_t s = grid.stride(axis);
     if (kind == BoundaryKind::wall) {
         const double wall = bc.wall(axis, side)[axis];
-        for_each_index(face_slab, [&](const Index<Dim>& i) { ua(i) = wall; });
+        for_each_offset(grid, face_slab, axis, [&](std::ptrdiff_t o, int) { a[o] = wall; });
     } else if (kind == BoundaryKind::inflow) {
         for_each_index(face_slab, [&](const Index<Dim>& i) {
             ua(i) = inflow_velocity(grid, bc, axis, side, grid.face_centre(axis, i));
         });
     }
-    for_each_index(rows.normal_ghosts, [&](const Index<Dim>& i) {
-        const double boundary = ua(with_axis(i, axis, face));
+    const bool is_outflow = kind == BoundaryKind::outflow;
+    for_each_offset(grid, rows.normal_ghosts, axis, [&](std::ptrdiff_t o, int x) {
+        const double boundary = a[o + (face - x) * s];
         // Outflow: zero gradient; wall and inflow: odd images about the boundary value.
-        ua(i) = kind == BoundaryKind::outflow
-                    ? boundary
-                    : 2.0 * boundary - ua(with_axis(i, axis, rows.normal_mirror(i[ax])));
+        a[o] = is_outflow ? boundary : 2.0 * boundary - a[o + (rows.normal_mirror(x) - x) * s];
     });
 }
 
@@ -138,26 +154,27 @@ void fill_tangential_side(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
     if (!grid.touches_side(axis, side)) {
         return;
     }
-    const auto ax = static_cast<std::size_t>(axis);
     const SideRows<Dim> rows = side_rows(grid, axis, side, window);
     const int first = rows.first;
     const int second = rows.second;
     const int ghost = rows.ghost;
+    double* a = ua.data();
+    const std::ptrdiff_t s = grid.stride(axis);
     if (bc.side_kind(axis, side) == BoundaryKind::outflow) {
-        for_each_index(rows.all_ghosts,
-                       [&](const Index<Dim>& i) { ua(i) = ua(with_axis(i, axis, first)); });
+        for_each_offset(grid, rows.all_ghosts, axis,
+                        [&](std::ptrdiff_t o, int x) { a[o] = a[o + (first - x) * s]; });
         return;
     }
     // Wall or inflow (whose tangential velocity is zero): the first ghost continues the
     // quadratic through the wall value and two interior values; further ghosts are odd images.
     const double wall = bc.wall(axis, side)[component];
-    for_each_index(slab(window, axis, ghost, ghost + 1), [&](const Index<Dim>& i) {
-        ua(i) =
-            (8.0 * wall - 6.0 * ua(with_axis(i, axis, first)) + ua(with_axis(i, axis, second))) /
-            3.0;
+    const std::ptrdiff_t to_first = (first - ghost) * s;
+    const std::ptrdiff_t to_second = (second - ghost) * s;
+    for_each_offset(grid, slab(window, axis, ghost, ghost + 1), axis, [&](std::ptrdiff_t o, int) {
+        a[o] = (8.0 * wall - 6.0 * a[o + to_first] + a[o + to_second]) / 3.0;
     });
-    for_each_index(rows.outer, [&](const Index<Dim>& i) {
-        ua(i) = 2.0 * wall - ua(with_axis(i, axis, rows.tangential_mirror(i[ax])));
+    for_each_offset(grid, rows.outer, axis, [&](std::ptrdiff_t o, int x) {
+        a[o] = 2.0 * wall - a[o + (rows.tangential_mirror(x) - x) * s];
     });
 }
 
@@ -235,6 +252,35 @@ double inflow_velocity(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& 
     return side == 0 ? speed : -speed;
 }
 
+namespace {
+
+/// The ghosts of velocity component `component` across the non-periodic sides `box` reaches,
+/// axis by axis, low side then high, each over the whole extent of `box` along the other axes
+/// (so that an edge or corner ghost is the last side's). A component's ghosts read only that
+/// component, so the components can be filled in any order.
+template <int Dim>
+void fill_wall_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc, int component,
+                      GridArray<Dim>& ua, const Box<Dim>& box)
+{
+    for (int d = 0; d < Dim; ++d) {
+        if (bc.periodic(d)) {
+            continue;
+        }
+        for (int side = 0; side < 2; ++side) {
+            if (!reaches_side(grid, box, d, side)) {
+                continue;
+            }
+            if (component == d) {
+                fill_normal_side(grid, bc, d, side, ua, box);
+            } else {
+                fill_tangential_side(grid, bc, d, side, component, ua, box);
+            }
+        }
+    }
+}
+
+} // namespace
+
 template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                           FaceField<Dim>& u, const Box<Dim>* window)
@@ -245,24 +291,18 @@ void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim
     // axes (the values are those of filling axis by axis in any order: a wall's ghosts depend
     // only on their own row, which a periodic image repeats).
     HaloExchange<Dim>(grid).fill(u);
-    for (int d = 0; d < Dim; ++d) {
-        if (bc.periodic(d)) {
-            continue;
-        }
-        for (int a = 0; a < Dim; ++a) {
-            GridArray<Dim>& ua = u[a];
-            for (int side = 0; side < 2; ++side) {
-                if (!reaches_side(grid, box, d, side)) {
-                    continue;
-                }
-                if (a == d) {
-                    fill_normal_side(grid, bc, d, side, ua, box);
-                } else {
-                    fill_tangential_side(grid, bc, d, side, a, ua, box);
-                }
-            }
-        }
+    for (int a = 0; a < Dim; ++a) {
+        fill_wall_ghosts(grid, bc, a, u[a], box);
     }
+}
+
+template <int Dim>
+void fill_component_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                           int component, GridArray<Dim>& ua)
+{
+    check_periodic_axes(grid, bc);
+    HaloExchange<Dim>(grid).fill(ua);
+    fill_wall_ghosts(grid, bc, component, ua, grid.storage_box());
 }
 
 template <int Dim>
@@ -403,14 +443,16 @@ void fill_cell_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& b
         if (bc.periodic(d)) {
             continue;
         }
+        double* a = phi.data();
+        const std::ptrdiff_t s = grid.stride(d);
         if (grid.touches_side(d, 0)) {
-            for_each_index(slab(grid.storage_box(), d, storage.lo[ax], 0),
-                           [&](const Index<Dim>& i) { phi(i) = phi(with_axis(i, d, -1 - i[ax])); });
+            for_each_offset(grid, slab(storage, d, storage.lo[ax], 0), d,
+                            [&](std::ptrdiff_t o, int x) { a[o] = a[o + (-1 - 2 * x) * s]; });
         }
         if (grid.touches_side(d, 1)) {
-            for_each_index(
-                slab(grid.storage_box(), d, n, storage.hi[ax]),
-                [&](const Index<Dim>& i) { phi(i) = phi(with_axis(i, d, 2 * n - 1 - i[ax])); });
+            for_each_offset(
+                grid, slab(storage, d, n, storage.hi[ax]), d,
+                [&](std::ptrdiff_t o, int x) { a[o] = a[o + (2 * n - 1 - 2 * x) * s]; });
         }
     }
 }
@@ -419,6 +461,10 @@ template void fill_velocity_ghosts<2>(const MacGrid<2>&, const BoundaryCondition
                                       FaceField<2>&, const Box<2>*);
 template void fill_velocity_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
                                       FaceField<3>&, const Box<3>*);
+template void fill_component_ghosts<2>(const MacGrid<2>&, const BoundaryConditions<2>&, int,
+                                       GridArray<2>&);
+template void fill_component_ghosts<3>(const MacGrid<3>&, const BoundaryConditions<3>&, int,
+                                       GridArray<3>&);
 template double inflow_velocity<2>(const MacGrid<2>&, const BoundaryConditions<2>&, int, int,
                                    const Vec<2>&) noexcept;
 template double inflow_velocity<3>(const MacGrid<3>&, const BoundaryConditions<3>&, int, int,

@@ -113,6 +113,12 @@ template <int Dim>
 void fill_velocity_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                           FaceField<Dim>& u, const Box<Dim>* window = nullptr);
 
+/// fill_velocity_ghosts for one component `component` (= u's axis) of a field whose other
+/// components' ghosts are already filled: after a solve that changed only that component.
+template <int Dim>
+void fill_component_ghosts(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                           int component, GridArray<Dim>& ua);
+
 /// `window` (fill_velocity_ghosts, zero_wall_ghosts, fold_wall_ghosts): if given (a part of
 /// the storage box), only the sides it reaches (out to the storage's end along their axis), and
 /// on those only the ghosts and boundary faces within it along the other axes: for a change

@@ -489,7 +489,7 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
         for (int k = 0; k < settings.sweeps; ++k) {
             red_black_sweep(grid, box, scaled, u);
         }
-        fill_velocity_ghosts(grid, bc, state.u);
+        fill_component_ghosts(grid, bc, axis, u);
         return;
     }
 
@@ -522,7 +522,7 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
             red_black_sweep(grid, box, scaled, u);
         }
     }
-    fill_velocity_ghosts(grid, bc, state.u);
+    fill_component_ghosts(grid, bc, axis, u);
 }
 
 template <int Dim>
