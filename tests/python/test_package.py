@@ -549,6 +549,37 @@ class HeavyDisk(unittest.TestCase):
         self.assertTrue(r["reached_floor"])
         self.assertGreaterEqual(r["y_end"], heavy_disk.FLOOR_CLEARANCE)
 
+class AddedMass(unittest.TestCase):
+    """tools/added_mass.py: the potential-flow added mass of a disk in a closed box, by the method
+    of fundamental solutions (the reference of tests/verification/test_added_mass.cpp)."""
+
+    def run_tool(self, *args):
+        tool = os.path.join(ROOT, "tools", "added_mass.py")
+        return subprocess.run([sys.executable, tool, *args], capture_output=True, text=True)
+
+    def test_the_concentric_cylinders_give_lambs_formula(self):
+        result = self.run_tool("--check")
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        self.assertIn("Lamb 1.133333", result.stdout)
+
+    def test_a_box_raises_the_added_mass_above_the_unbounded_one(self):
+        # The light-disk test's box, and a box 16 diameters wide, where the walls add under 1 %.
+        values = []
+        for box, centre in ((("2", "4"), ("1", "2")), (("8", "8"), ("4", "4"))):
+            result = self.run_tool("--box", *box, "--centre", *centre, "--radius", "0.25")
+            self.assertEqual(result.returncode, 0, result.stderr)
+            values.append(float(result.stdout.split("=")[2].split()[0]))
+        self.assertAlmostEqual(values[0], 1.10839, delta=2e-5)
+        self.assertGreater(values[1], 1.0)
+        self.assertLess(values[1], 1.01)
+
+    def test_a_disk_outside_its_box_is_exit_2_and_one_line(self):
+        result = self.run_tool("--box", "2", "4", "--centre", "1.9", "2", "--radius", "0.25")
+        self.assertEqual(result.returncode, 2)
+        self.assertEqual(len(result.stderr.strip().splitlines()), 1)
+        self.assertIn("not inside the box", result.stderr)
+
+
 class SphereWall(unittest.TestCase):
     """tools/compare_sphere_wall.py: Brenner's (1961) series against its published table, and
     κ = F/(6πμrU) of a run from particles.csv and case.toml, each force part at its own gap."""

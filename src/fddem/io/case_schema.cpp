@@ -434,11 +434,13 @@ std::vector<KeySpec> case_schema()
               &CaseConfig::coupling, &CouplingConfig::marker_spacing_ratio));
     s.push_back(bound(key("coupling", "markers", T::string, none, "\"paper\"",
                           "Marker layout: paper (the last ring half a ring spacing inside the "
-                          "surface: the body hydrodynamically smaller by about 0.4 h) or "
-                          "retracted (the outermost ring coupling.marker_retraction h inside the "
-                          "surface, the rings evenly spaced inside it: drag and settling within "
-                          "about 1 % at D/16–D/20, but light bodies accelerate too slowly; "
-                          "docs/method.md §4) or surface (only that outermost ring, markers "
+                          "surface: the body smaller by about 0.4 h in drag, its inertia within "
+                          "2.3 % from D/16) or retracted (the outermost ring "
+                          "coupling.marker_retraction h inside the surface, the rings evenly "
+                          "spaced inside it: drag and settling within about 1 % at D/16–D/20, but "
+                          "the body carries too much fluid, +12 % inertia at D/16, so light bodies "
+                          "accelerate too slowly; docs/method.md §4) or surface (only that "
+                          "outermost ring, markers "
                           "about coupling.marker_spacing_ratio h apart, each owning a shell of "
                           "thickness h; fixed and prescribed bodies only)."),
                       &CaseConfig::coupling, &CouplingConfig::markers));
