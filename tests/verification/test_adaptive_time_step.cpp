@@ -64,6 +64,31 @@ end = 0.2
 tolerance = 1e-4
 )";
 
+TEST(AdaptiveTimeStep, AStepBelowTheShortestAllowedStopsTheRunAtTheLastGoodStep)
+{
+    // time.min_dt as the collapse of a diverged flow would meet it: the falling disk speeds up,
+    // the Courant limit shortens the step below 0.002 s at the third step (0.0057, 0.0024, 0.0018
+    // s), and the run stops there with a NumericalError naming the time step, back at the end of
+    // the last step it took.
+    const CaseConfig c = read_case_string(heavy_disk, "test:heavy disk",
+                                          {"time.max_courant=0.5", "time.min_dt=0.002"});
+    Simulation<2> sim(c);
+    double last_good = 0.0;
+    try {
+        for (StepReport report = sim.advance(); !sim.is_finished(report); report = sim.advance()) {
+            last_good = sim.clock().time;
+        }
+        ADD_FAILURE() << "the run reached its end";
+    } catch (const NumericalError& e) {
+        EXPECT_EQ(e.where(), "the adaptive time step");
+        EXPECT_NE(std::string(e.what()).find("time.min_dt = 0.002 s"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_GT(last_good, 0.0);
+    EXPECT_DOUBLE_EQ(sim.clock().time, last_good);
+    EXPECT_TRUE(sim.bodies().front().velocity.allFinite());
+}
+
 TEST(AdaptiveTimeStep, ARunThatBlowsUpAtTheFixedStepRunsWithTheLimit)
 {
     // At Δt = 0.02 the flow around the falling disk blows up (measured: step 7, t = 0.14 s,

@@ -272,6 +272,16 @@ std::vector<KeySpec> case_schema()
                            "step, and Δt grows by at most 1.2× per step. None: the fixed "
                            "time.dt.")),
               &CaseConfig::time, &TimeConfig::max_courant));
+    s.push_back(bound(
+        positive(
+            key("time", "min_dt", T::real, "s", "none",
+                "With time.max_courant: the shortest step the Courant limit "
+                "may ask for (none: 1e-6 × time.dt). Below it the run stops as a numerical failure "
+                "(exit status 3, the outputs and a checkpoint of the last "
+                "good step written): a flow whose speed grows as Δt "
+                "shrinks has diverged, and would otherwise march on at ever "
+                "smaller steps without end.")),
+        &CaseConfig::time, &TimeConfig::min_dt));
     s.push_back(bound(key("time", "steady", T::boolean, none, "false",
                           "Pseudo-time march to a steady state (needs time.steady_tolerance, no "
                           "free bodies): Δt starts at time.dt and follows the residual, Δt ← Δt · "

@@ -77,8 +77,9 @@ struct TimeConfig {
     double rest_duration = 0.1;             ///< ... for this long [s]
     double min_end = 0.0; ///< rest_speed and steady_tolerance end no run before this [s]
     long max_steps = 100000000;
-    std::optional<double> max_courant;     ///< adaptive Δt: at most this many cells per step
-    bool is_steady = false;                ///< pseudo-time march to a steady state (SER)
+    std::optional<double> max_courant; ///< adaptive Δt: at most this many cells per step
+    std::optional<double> min_dt; ///< below it the adaptive Δt stops the run [s] (none: 1e-6 dt)
+    bool is_steady = false;       ///< pseudo-time march to a steady state (SER)
     TimeScheme scheme = TimeScheme::euler; ///< the time derivative (core/time_scheme.hpp)
 };
 

@@ -13,6 +13,8 @@
 #include "fddem/simulation/simulation_setup.hpp"
 #include "fddem/simulation/step_diagnostics.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -82,6 +84,15 @@ void Simulation<Dim>::choose_time_step()
         if (root > 0.0) {
             speed_per_cell = std::max(speed_per_cell, reach / h / (2.0 * reach / root));
         }
+    }
+    const double min_dt = config_.time.min_dt.value_or(collapsed_step_share * config_.time.dt);
+    if (is_step_collapsed(step_control_, speed_per_cell, min_dt)) {
+        throw NumericalError(
+            clock_.step + 1, clock_.time, "the adaptive time step",
+            fmt::format("time.max_courant asks for Δt = {:.3g} s, below time.min_dt = {:.3g} s: "
+                        "a flow whose speed grows as Δt shrinks has diverged (if steps this "
+                        "short are expected, lower time.min_dt)",
+                        *step_control_.max_courant / speed_per_cell, min_dt));
     }
     set_time_step(
         next_time_step(step_control_, clock_.dt, clock_.time, speed_per_cell, step_history_));

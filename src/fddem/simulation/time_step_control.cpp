@@ -5,6 +5,13 @@
 
 namespace fddem {
 
+bool is_step_collapsed(const TimeStepSettings& settings, double speed_per_cell,
+                       double min_dt) noexcept
+{
+    return settings.max_courant && speed_per_cell > 0.0 &&
+           *settings.max_courant < min_dt * speed_per_cell;
+}
+
 double next_time_step(const TimeStepSettings& settings, double dt, double time,
                       double speed_per_cell, const TimeStepHistory& history)
 {

@@ -48,6 +48,19 @@ struct TimeStepHistory {
     }
 };
 
+/// The smallest step time.max_courant may ask for before the run is stopped as diverged:
+/// time.min_dt if given, else this share of time.dt.
+inline constexpr double collapsed_step_share = 1e-6;
+
+/// Whether the Courant limit asks for a step shorter than `min_dt` [s] at `speed_per_cell`
+/// [1/s]: a flow whose speed grows as Δt shrinks, which is a diverged solution and not a fast
+/// one. Without the test such a run marches on at ever smaller steps and never ends (the
+/// 200-sphere soak, 2026-11-28: Δt from 5e-4 s to 1e-96 s over 900 steps at a Courant number of
+/// 0.38, the velocity growing as 1/Δt). The end-time landing is not tested: its last step may be
+/// short by design. Pure.
+[[nodiscard]] bool is_step_collapsed(const TimeStepSettings& settings, double speed_per_cell,
+                                     double min_dt) noexcept;
+
 /// Δt [s] for a step from `time` [s] after one of `dt` [s], given the largest speed per cell
 /// `speed_per_cell` = max |u|/h over the fluid and the bodies [1/s] now. Pure.
 [[nodiscard]] double next_time_step(const TimeStepSettings& settings, double dt, double time,

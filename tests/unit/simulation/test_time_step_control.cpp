@@ -17,6 +17,18 @@ TEST(TimeStepControl, CourantLimitHoldsTheStepToTheGivenCellsPerStep)
     EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.0, 0.1, {}), 0.1);
 }
 
+TEST(TimeStepControl, ACourantStepBelowTheShortestAllowedIsACollapse)
+{
+    const TimeStepSettings s{0.1, 0.5, false, 1.0, 1.2};
+    // 40 cells per second ask for 0.0125 s.
+    EXPECT_FALSE(is_step_collapsed(s, 40.0, 0.01));
+    EXPECT_TRUE(is_step_collapsed(s, 40.0, 0.02));
+    // A fluid at rest asks for nothing; without the Courant limit nothing collapses.
+    EXPECT_FALSE(is_step_collapsed(s, 0.0, 0.02));
+    const TimeStepSettings fixed{0.1, std::nullopt, false, 1.0, 1.2};
+    EXPECT_FALSE(is_step_collapsed(fixed, 1e9, 0.02));
+}
+
 TEST(TimeStepControl, StepGrowsByAtMostTheGrowthFactor)
 {
     const TimeStepSettings s{1.0, 0.5, false, std::nullopt, 1.2};
