@@ -686,6 +686,13 @@ std::vector<BadCase> bad_cases()
          0,
          "simple.min_outer_iterations_dem",
          "out of range: must be [1, 10]"},
+        {"set_min_dt_not_positive",
+         v,
+         {"time.min_dt=-1"},
+         "--set",
+         0,
+         "time.min_dt",
+         "out of range: must be > 0"},
         {"set_hold_mass_residual_not_a_boolean",
          v,
          {"simple.hold_mass_residual=maybe"},
@@ -1214,6 +1221,7 @@ rest_duration = 0.3
 min_end = 0.2
 max_steps = 77
 max_courant = 0.4
+min_dt = 1e-7
 scheme = "bdf2"
 )");
     const CaseConfig c = read_case_string(text, "every.toml");
@@ -1227,6 +1235,7 @@ scheme = "bdf2"
     EXPECT_EQ(c.time.min_end, 0.2);
     EXPECT_EQ(c.time.max_steps, 77);
     EXPECT_EQ(c.time.max_courant, 0.4);
+    EXPECT_EQ(c.time.min_dt, 1e-7);
     EXPECT_EQ(c.time.scheme, TimeScheme::bdf2);
     EXPECT_TRUE(c.lubrication.is_enabled);
     EXPECT_EQ(c.lubrication.range, 1.5);
