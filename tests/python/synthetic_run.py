@@ -182,9 +182,9 @@ def make_run(directory, dimension=2, n_bodies=2, n_frames=3, cells=16):
     times = [0.1 * k for k in range(n_frames)]
     with open(os.path.join(directory, "solver.csv"), "w") as f:
         f.write("step,time,dt,outer_iterations,total_outer_iterations,is_converged,"
-                "mass_residual,momentum_residual,courant,rate_of_change,wall_seconds\n")
+                "mass_residual,momentum_residual,courant,rate_of_change,retries,wall_seconds\n")
         for step in range(1, 11):
-            f.write(f"{step},{0.02 * step},0.02,5,{5 * step},1,1e-6,2e-6,0.3,0.1,{0.01 * step}\n")
+            f.write(f"{step},{0.02 * step},0.02,5,{5 * step},1,1e-6,2e-6,0.3,0.1,0,{0.01 * step}\n")
     nodes = [np.linspace(0, 1, cells + 1)] * 2 + (
         [np.linspace(0, 1, cells + 1)] if dimension == 3 else [np.zeros(1)])
     vector_names = ("x", "y", "z")[:dimension]

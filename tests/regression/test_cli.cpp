@@ -70,7 +70,8 @@ TEST_F(Cli, SmallRunWritesEveryDocumentedOutput)
     std::string header;
     std::getline(solver, header);
     EXPECT_EQ(header, "step,time,dt,outer_iterations,total_outer_iterations,is_converged,"
-                      "mass_residual,momentum_residual,courant,rate_of_change,wall_seconds");
+                      "mass_residual,momentum_residual,courant,rate_of_change,retries,"
+                      "wall_seconds");
     int rows = 0;
     for (std::string line; std::getline(solver, line);) {
         ++rows;

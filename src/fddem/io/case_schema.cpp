@@ -282,6 +282,29 @@ std::vector<KeySpec> case_schema()
                 "shrinks has diverged, and would otherwise march on at ever "
                 "smaller steps without end.")),
         &CaseConfig::time, &TimeConfig::min_dt));
+    s.push_back(bound(
+        ranged(key("time", "max_retries", T::integer, none, "3",
+                   "With time.max_courant: how often a failed step is taken again from its "
+                   "start at half its Δt (the controller then grows Δt back by at most 1.2× a "
+                   "step). A step fails if its flow blows up, or if it ends above "
+                   "time.retry_mass_residual or time.retry_courant. A step that still fails "
+                   "after the last retry is kept with a warning (a blow-up stops the run, exit "
+                   "status 3); no retry goes below time.min_dt. 0: never retry."),
+               0, 60, false, false),
+        &CaseConfig::time, &TimeConfig::max_retries));
+    s.push_back(bound(positive(key("time", "retry_mass_residual", T::real, none, "none",
+                                   "With time.max_courant: a step whose outer iterations end "
+                                   "with a mass residual (solver.csv) above this is retried at "
+                                   "half its Δt (time.max_retries). None: not a reason to "
+                                   "retry.")),
+                      &CaseConfig::time, &TimeConfig::retry_mass_residual));
+    s.push_back(bound(positive(key("time", "retry_courant", T::real, none, "none",
+                                   "With time.max_courant: a step whose Courant number after "
+                                   "it (solver.csv) is above this is retried at half its Δt "
+                                   "(time.max_retries): the flow sped up within the step "
+                                   "beyond what the limit allowed for. None: not a reason to "
+                                   "retry.")),
+                      &CaseConfig::time, &TimeConfig::retry_courant));
     s.push_back(bound(key("time", "steady", T::boolean, none, "false",
                           "Pseudo-time march to a steady state (needs time.steady_tolerance, no "
                           "free bodies): Δt starts at time.dt and follows the residual, Δt ← Δt · "

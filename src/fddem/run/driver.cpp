@@ -106,6 +106,14 @@ RunResult Driver<Dim>::step_to_end()
                 outputs_.append_step(clock, report, record_.total_outer_iterations, wall_seconds());
             }
             watch_step(report, clock, config_, record_, monitor_);
+            if (report.retries > 0 && ++retried_steps_ <= max_reported_retries) {
+                monitor_.message(fmt::format(
+                    "warning: step {} (t = {:g} s) taken again {} time(s), kept at Δt = {:.3g} s; "
+                    "the last failure: {}{}",
+                    clock.step, clock.time, report.retries, clock.dt, sim_.last_retry_note(),
+                    retried_steps_ == max_reported_retries ? "; further ones only in solver.csv"
+                                                           : ""));
+            }
             monitor_.step_done(clock.step, clock.time, report.outer_iterations);
             write_scheduled_outputs();
             is_finished = sim_.is_finished(report);

@@ -96,6 +96,9 @@ private:
     /// Wall time of the time loop before this process (a restarted run) [s].
     double wall_seconds_before_ = 0.0;
     std::chrono::steady_clock::time_point loop_start_;
+    /// Retried steps this process has taken (time.max_retries); the first few are reported.
+    long retried_steps_ = 0;
+    static constexpr long max_reported_retries = 10;
 };
 
 } // namespace fddem

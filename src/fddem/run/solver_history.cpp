@@ -21,6 +21,7 @@ auto solver_row(const Clock& clock, const StepReport& report, long total_outer_i
         visit(ColumnName{"momentum_residual"}, report.momentum_residual);
         visit(ColumnName{"courant"}, report.courant);
         visit(ColumnName{"rate_of_change"}, report.rate_of_change);
+        visit(ColumnName{"retries"}, static_cast<double>(report.retries));
         visit(ColumnName{"wall_seconds"}, wall_seconds);
     };
 }

@@ -11,7 +11,7 @@
 namespace fddem {
 
 /// step,time,dt,outer_iterations,total_outer_iterations,is_converged,mass_residual,
-/// momentum_residual,courant,rate_of_change,wall_seconds
+/// momentum_residual,courant,rate_of_change,retries,wall_seconds
 [[nodiscard]] std::vector<std::string> solver_columns();
 
 /// The row of the step that `clock` ends and `report` describes.

@@ -79,8 +79,11 @@ struct TimeConfig {
     long max_steps = 100000000;
     std::optional<double> max_courant; ///< adaptive Δt: at most this many cells per step
     std::optional<double> min_dt; ///< below it the adaptive Δt stops the run [s] (none: 1e-6 dt)
-    bool is_steady = false;       ///< pseudo-time march to a steady state (SER)
-    TimeScheme scheme = TimeScheme::euler; ///< the time derivative (core/time_scheme.hpp)
+    int max_retries = 3; ///< with max_courant: a failed step is taken again at Δt/2 this often
+    std::optional<double> retry_mass_residual; ///< a step ending above it is retried
+    std::optional<double> retry_courant;       ///< a step ending above it is retried
+    bool is_steady = false;                    ///< pseudo-time march to a steady state (SER)
+    TimeScheme scheme = TimeScheme::euler;     ///< the time derivative (core/time_scheme.hpp)
 };
 
 /// [simple]

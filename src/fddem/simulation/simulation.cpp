@@ -33,7 +33,8 @@ Simulation<Dim>::Simulation(const CaseConfig& config, const Communicator& ranks)
       outer_(grid_, bc_, properties_, kernel_, config, gravity_,
              contacts_ && contacts_->is_paper_coupling),
       step_control_{config.time.dt, config.time.max_courant, config.time.is_steady, config.time.end,
-                    config.time.is_steady ? 2.0 : 1.2}
+                    config.time.is_steady ? 2.0 : 1.2},
+      retry_{config.time.max_retries, config.time.retry_mass_residual, config.time.retry_courant}
 {
     clock_.dt = config.time.dt;
     times_.communication_clock = grid_.communicator().seconds_counter();
@@ -85,7 +86,7 @@ void Simulation<Dim>::choose_time_step()
             speed_per_cell = std::max(speed_per_cell, reach / h / (2.0 * reach / root));
         }
     }
-    const double min_dt = config_.time.min_dt.value_or(collapsed_step_share * config_.time.dt);
+    const double min_dt = shortest_step();
     if (is_step_collapsed(step_control_, speed_per_cell, min_dt)) {
         throw NumericalError(
             clock_.step + 1, clock_.time, "the adaptive time step",
@@ -94,8 +95,24 @@ void Simulation<Dim>::choose_time_step()
                         "short are expected, lower time.min_dt)",
                         *step_control_.max_courant / speed_per_cell, min_dt));
     }
-    set_time_step(
-        next_time_step(step_control_, clock_.dt, clock_.time, speed_per_cell, step_history_));
+    double dt =
+        next_time_step(step_control_, clock_.dt, clock_.time, speed_per_cell, step_history_);
+    if (retry_dt_) {
+        dt = std::min(dt, *retry_dt_); // a retry: half the failed attempt's Δt, or less
+    }
+    set_time_step(dt);
+}
+
+template <int Dim>
+double Simulation<Dim>::shortest_step() const noexcept
+{
+    return config_.time.min_dt.value_or(collapsed_step_share * config_.time.dt);
+}
+
+template <int Dim>
+bool Simulation<Dim>::may_retry_step(int retries, double dt) const noexcept
+{
+    return dt > 0.0 && may_retry(step_control_, retry_, retries, dt, shortest_step());
 }
 
 template <int Dim>
@@ -113,11 +130,30 @@ StepReport Simulation<Dim>::advance()
     step_start_.p = state_.p;
     step_start_.bodies = bodies_;
     step_start_.contacts = contact_history_;
-    try {
-        return advance_unguarded();
-    } catch (const NumericalError&) {
-        roll_back_step();
-        throw;
+    step_start_.clock = clock_;
+    step_start_.history = step_history_;
+    step_start_.rest_since = rest_since_;
+    retry_note_.clear();
+    retry_dt_.reset();
+    for (int retries = 0;; ++retries) {
+        attempt_dt_ = 0.0; // set once choose_time_step() has chosen (a collapse is not retried)
+        try {
+            StepReport report = advance_unguarded();
+            const std::string reason = retry_reason(retry_, report);
+            if (reason.empty() || !may_retry_step(retries, attempt_dt_)) {
+                report.retries = retries;
+                return report; // kept; one still above a limit is reported as it is
+            }
+            retry_note_ = fmt::format("Δt = {:.3g} s: {}", attempt_dt_, reason);
+            roll_back_step();
+        } catch (const NumericalError& e) {
+            roll_back_step();
+            if (!may_retry_step(retries, attempt_dt_)) {
+                throw;
+            }
+            retry_note_ = fmt::format("Δt = {:.3g} s: {} ({})", attempt_dt_, e.what(), e.where());
+        }
+        retry_dt_ = 0.5 * attempt_dt_;
     }
 }
 
@@ -128,6 +164,7 @@ StepReport Simulation<Dim>::advance_unguarded()
     if (config_.time.max_courant || config_.time.is_steady) {
         choose_time_step();
     }
+    attempt_dt_ = clock_.dt;
     begin_step(); // u^n, U^n, ω^n kept (and u^{n−1}, …); λ* = λ^n already
     const TimeLevels levels = time_levels(config_.time.scheme, clock_.dt, clock_.previous_dt);
     if (contacts_) {
@@ -274,6 +311,10 @@ void Simulation<Dim>::roll_back_step()
     state_.divergence.fill(0.0);
     bodies_ = step_start_.bodies;
     contact_history_ = step_start_.contacts;
+    clock_ = step_start_.clock;
+    step_history_ = step_start_.history;
+    rest_since_ = step_start_.rest_since;
+    set_time_step(clock_.dt); // the Δt the last good step took, and what derives from it
     outer_.is_reusable_assembly() = false;
     outer_.spread_body_force(bodies_, uniform_force_, state_); // the body force of the step's start
 }

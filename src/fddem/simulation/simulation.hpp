@@ -53,7 +53,12 @@ public:
     /// to convergence, the move (17). Throws NumericalError if the step blows up (a non-finite
     /// residual, a body leaving the box); the simulation is then back in the state it had before
     /// the step, exactly, so that it can be checkpointed and continued (with a smaller Δt, say).
+    /// With time.max_courant, a step that blows up or crosses a time.retry_* limit is first
+    /// taken again from its start at half its Δt, up to time.max_retries times (the report's
+    /// `retries`; last_retry_note() says why).
     StepReport advance();
+    /// Why the last step was retried (the last failure, in words), empty if it was not.
+    [[nodiscard]] const std::string& last_retry_note() const noexcept { return retry_note_; }
 
     /// The one place Δt [s] is set: adopts it for the next step, with everything derived from
     /// it (the momentum multigrid's cycles, the DEM's sub-step count N_i; a reused momentum
@@ -238,10 +243,15 @@ private:
     /// Tracks rest_since_ after a step (time.rest_speed).
     void track_rest();
 
-    /// Undoes a step that threw: the state of the step's start (except per-step scratch and
-    /// u^{n−2}, which only a reused assembly needs; the next step reassembles, and its
-    /// begin_step() sets u^{n−1} again from u^n).
+    /// Undoes a step that threw or is to be retried: the state of the step's start (except
+    /// per-step scratch and u^{n−2}, which only a reused assembly needs; the next step
+    /// reassembles, and its begin_step() sets u^{n−1} again from u^n), its clock and Δt
+    /// included.
     void roll_back_step();
+    /// Whether a step of `dt` [s] that failed after `retries` retries is taken again.
+    [[nodiscard]] bool may_retry_step(int retries, double dt) const noexcept;
+    /// time.min_dt, or its default share of time.dt [s].
+    [[nodiscard]] double shortest_step() const noexcept;
 
     CaseConfig config_;
     MacGrid<Dim> grid_;
@@ -270,8 +280,16 @@ private:
         GridArray<Dim> p;
         Particles<Dim> bodies;
         ContactHistory<Dim> contacts;
+        Clock clock;
+        TimeStepHistory history;
+        double rest_since = -1.0;
     };
     StepStart step_start_;
+    RetrySettings retry_; ///< time.max_retries, time.retry_*
+    /// The longest Δt the step being retried may take (half the failed attempt's) [s].
+    std::optional<double> retry_dt_;
+    double attempt_dt_ = 0.0; ///< Δt of the step being taken; 0 before choose_time_step
+    std::string retry_note_;  ///< why the last step was retried, empty if it was not
 };
 
 } // namespace fddem

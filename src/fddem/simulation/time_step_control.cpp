@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/simulation/time_step_control.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
 
 namespace fddem {
 
@@ -10,6 +13,36 @@ bool is_step_collapsed(const TimeStepSettings& settings, double speed_per_cell,
 {
     return settings.max_courant && speed_per_cell > 0.0 &&
            *settings.max_courant < min_dt * speed_per_cell;
+}
+
+namespace {
+
+/// x > limit, or x not a number (without the floating-point trap an ordered compare raises).
+bool is_above(double x, double limit) noexcept
+{
+    return std::isnan(x) || std::isgreater(x, limit);
+}
+
+} // namespace
+
+std::string retry_reason(const RetrySettings& retry, const StepReport& report)
+{
+    if (retry.mass_residual && is_above(report.mass_residual, *retry.mass_residual)) {
+        return fmt::format("mass residual {:.3g} above time.retry_mass_residual = {:g}",
+                           report.mass_residual, *retry.mass_residual);
+    }
+    if (retry.courant && is_above(report.courant, *retry.courant)) {
+        return fmt::format("Courant number {:.3g} above time.retry_courant = {:g}", report.courant,
+                           *retry.courant);
+    }
+    return {};
+}
+
+bool may_retry(const TimeStepSettings& settings, const RetrySettings& retry, int retries, double dt,
+               double min_dt) noexcept
+{
+    return settings.max_courant && !settings.is_steady && retries < retry.max_retries &&
+           0.5 * dt >= min_dt;
 }
 
 double next_time_step(const TimeStepSettings& settings, double dt, double time,

@@ -16,7 +16,10 @@
 ///   (it falls with 1/Δt for the same Δu, and SER would grow Δt without end; measured on the
 ///   Re 1000 cavity: Δt doubled to 250 s with every step unconverged).
 
+#include "fddem/simulation/step_report.hpp"
+
 #include <optional>
+#include <string>
 
 namespace fddem {
 
@@ -60,6 +63,26 @@ inline constexpr double collapsed_step_share = 1e-6;
 /// short by design. Pure.
 [[nodiscard]] bool is_step_collapsed(const TimeStepSettings& settings, double speed_per_cell,
                                      double min_dt) noexcept;
+
+/// When a step is taken again from its start at half its Δt (time.max_retries and the
+/// time.retry_* keys; only with time.max_courant, whose controller then grows Δt back by at
+/// most max_growth a step). A step that blows up (NumericalError) is always retried; a finished
+/// one if its report crosses one of the optional limits.
+struct RetrySettings {
+    int max_retries = 0;                 ///< time.max_retries: retries of one step at most
+    std::optional<double> mass_residual; ///< time.retry_mass_residual
+    std::optional<double> courant;       ///< time.retry_courant
+};
+
+/// Why the finished step of `report` is to be retried (the limit it crossed, in words), or
+/// empty if it is to be kept. Pure.
+[[nodiscard]] std::string retry_reason(const RetrySettings& retry, const StepReport& report);
+
+/// Whether a step of `dt` [s] that failed after `retries` retries may be taken again at
+/// dt/2: the step is adaptive (time.max_courant), retries are left, and dt/2 is no shorter
+/// than `min_dt` [s]. Pure.
+[[nodiscard]] bool may_retry(const TimeStepSettings& settings, const RetrySettings& retry,
+                             int retries, double dt, double min_dt) noexcept;
 
 /// Δt [s] for a step from `time` [s] after one of `dt` [s], given the largest speed per cell
 /// `speed_per_cell` = max |u|/h over the fluid and the bodies [1/s] now. Pure.

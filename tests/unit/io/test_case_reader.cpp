@@ -693,6 +693,20 @@ std::vector<BadCase> bad_cases()
          0,
          "time.min_dt",
          "out of range: must be > 0"},
+        {"set_max_retries_negative",
+         v,
+         {"time.max_retries=-1"},
+         "--set",
+         0,
+         "time.max_retries",
+         "out of range: must be [0, 60]"},
+        {"set_retry_mass_residual_not_positive",
+         v,
+         {"time.retry_mass_residual=0"},
+         "--set",
+         0,
+         "time.retry_mass_residual",
+         "out of range: must be > 0"},
         {"set_hold_mass_residual_not_a_boolean",
          v,
          {"simple.hold_mass_residual=maybe"},
@@ -1222,6 +1236,9 @@ min_end = 0.2
 max_steps = 77
 max_courant = 0.4
 min_dt = 1e-7
+max_retries = 5
+retry_mass_residual = 0.3
+retry_courant = 0.9
 scheme = "bdf2"
 )");
     const CaseConfig c = read_case_string(text, "every.toml");
@@ -1236,6 +1253,9 @@ scheme = "bdf2"
     EXPECT_EQ(c.time.max_steps, 77);
     EXPECT_EQ(c.time.max_courant, 0.4);
     EXPECT_EQ(c.time.min_dt, 1e-7);
+    EXPECT_EQ(c.time.max_retries, 5);
+    EXPECT_EQ(c.time.retry_mass_residual, 0.3);
+    EXPECT_EQ(c.time.retry_courant, 0.9);
     EXPECT_EQ(c.time.scheme, TimeScheme::bdf2);
     EXPECT_TRUE(c.lubrication.is_enabled);
     EXPECT_EQ(c.lubrication.range, 1.5);

@@ -165,6 +165,7 @@ TEST(OutputColumns, EachSolverValueLandsInItsColumn)
     report.momentum_residual = 2e-5;
     report.courant = 0.25;
     report.rate_of_change = 0.125;
+    report.retries = 4;
     const Clock clock{.time = 0.5, .step = 5, .dt = 0.1};
     EXPECT_EQ(written_row(
                   solver_columns(),
@@ -179,6 +180,7 @@ TEST(OutputColumns, EachSolverValueLandsInItsColumn)
                    {"momentum_residual", 2e-5},
                    {"courant", 0.25},
                    {"rate_of_change", 0.125},
+                   {"retries", 4.0},
                    {"wall_seconds", 2.0}}));
 }
 

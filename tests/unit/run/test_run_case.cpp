@@ -112,7 +112,7 @@ TEST(RunCase, CavityRunDirectoryHoldsTheDocumentedFilesAndTheLidDrivenFlow)
     EXPECT_EQ(solver.columns,
               (std::vector<std::string>{"step", "time", "dt", "outer_iterations",
                                         "total_outer_iterations", "is_converged", "mass_residual",
-                                        "momentum_residual", "courant", "rate_of_change",
+                                        "momentum_residual", "courant", "rate_of_change", "retries",
                                         "wall_seconds"}));
     ASSERT_EQ(solver.rows.size(), 20U); // one row per step
     EXPECT_EQ(solver.column("step").back(), 20.0);

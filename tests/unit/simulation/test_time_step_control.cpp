@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
+#include "support/nans_allowed.hpp"
+
 namespace fddem {
 namespace {
 
@@ -27,6 +31,41 @@ TEST(TimeStepControl, ACourantStepBelowTheShortestAllowedIsACollapse)
     EXPECT_FALSE(is_step_collapsed(s, 0.0, 0.02));
     const TimeStepSettings fixed{0.1, std::nullopt, false, 1.0, 1.2};
     EXPECT_FALSE(is_step_collapsed(fixed, 1e9, 0.02));
+}
+
+TEST(TimeStepControl, AStepIsRetriedWhenItEndsAboveALimit)
+{
+    StepReport report;
+    report.mass_residual = 0.2;
+    report.courant = 0.9;
+    // No limit given: kept, whatever its residual and Courant number.
+    EXPECT_EQ(retry_reason(RetrySettings{3, std::nullopt, std::nullopt}, report), "");
+    EXPECT_EQ(retry_reason(RetrySettings{3, 0.5, 1.0}, report), "");
+    EXPECT_EQ(retry_reason(RetrySettings{3, 0.1, 1.0}, report),
+              "mass residual 0.2 above time.retry_mass_residual = 0.1");
+    EXPECT_EQ(retry_reason(RetrySettings{3, std::nullopt, 0.6}, report),
+              "Courant number 0.9 above time.retry_courant = 0.6");
+    // A residual that is not a number is above every limit.
+    const test::NansAllowed nan; // the NaN is made on purpose
+    report.mass_residual = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_NE(retry_reason(RetrySettings{3, 0.5, std::nullopt}, report), "");
+}
+
+TEST(TimeStepControl, ARetryNeedsTheAdaptiveStepRetriesLeftAndRoomAboveTheShortestStep)
+{
+    const TimeStepSettings adaptive{0.1, 0.5, false, 1.0, 1.2};
+    const RetrySettings three{3, std::nullopt, std::nullopt};
+    EXPECT_TRUE(may_retry(adaptive, three, 0, 0.01, 1e-6));
+    EXPECT_TRUE(may_retry(adaptive, three, 2, 0.01, 1e-6));
+    EXPECT_FALSE(may_retry(adaptive, three, 3, 0.01, 1e-6)); // none left
+    EXPECT_TRUE(may_retry(adaptive, three, 0, 0.01, 0.005));
+    EXPECT_FALSE(may_retry(adaptive, three, 0, 0.01, 0.0051)); // Δt/2 below time.min_dt
+    EXPECT_FALSE(may_retry(adaptive, RetrySettings{0, 0.1, 0.1}, 0, 0.01, 1e-6));
+    // The fixed step of the paper's cases is never changed; the steady march has its own rule.
+    const TimeStepSettings fixed{0.1, std::nullopt, false, 1.0, 1.2};
+    EXPECT_FALSE(may_retry(fixed, three, 0, 0.01, 1e-6));
+    const TimeStepSettings steady{0.1, 0.5, true, std::nullopt, 2.0};
+    EXPECT_FALSE(may_retry(steady, three, 0, 0.01, 1e-6));
 }
 
 TEST(TimeStepControl, StepGrowsByAtMostTheGrowthFactor)
