@@ -79,6 +79,16 @@ void report_derived_values(const CaseConfig& config, RunMonitor& monitor)
                 : "fddem: contact.fluid_force auto -> none (lubrication off): the DEM moves a "
                   "body in contact by its buoyant weight and the contact forces, as the paper");
     }
+    const bool has_sphere =
+        std::any_of(config.bodies.begin(), config.bodies.end(),
+                    [](const BodyConfig& body) { return body.shape == BodyShape::sphere; });
+    if (has_sphere && config.coupling.markers == MarkerLayout::paper) {
+        monitor.message("warning: coupling.markers = \"paper\" on spheres: their drag is about "
+                        "20 % low at d/h = 8 (the outer shell lies 0.7 h inside the surface), and "
+                        "their forcing overshoots (the largest eigenvalue of a sphere's I·D is "
+                        "2.8-3.7, above 2); the 3D cases use \"retracted\" (docs/method.md §4, "
+                        "\"The marker layout in 3D\", \"The forcing operator\")");
+    }
     const NondimensionalConfig& nondimensional = config.nondimensional;
     if (!nondimensional.reynolds) {
         return;

@@ -228,5 +228,46 @@ TEST(RunCase, ExistingRunDirectoryIsRefusedUnlessOverwritten)
     EXPECT_TRUE(fs::exists(run / "solver.csv"));
 }
 
+TEST(RunCase, ASphereWithThePaperLayoutIsWarnedOfItsOvershootingForcing)
+{
+    // ForcingOperator.ThePaperLayoutOfASphereOvershoots: the warning names the layout the 3D
+    // cases use instead; a sphere with it, or a disk with the paper's, gets none.
+    const std::string sphere = R"(
+[domain]
+size = [1.0, 1.0, 1.0]
+cells = [16, 16, 16]
+[fluid]
+density = 1.0
+viscosity = 0.1
+[[bodies]]
+shape = "sphere"
+diameter = 0.5
+density = 2.0
+position = [0.5, 0.5, 0.5]
+motion = "fixed"
+[time]
+dt = 0.01
+end = 0.01
+)";
+    const std::string warning = "warning: coupling.markers = \"paper\" on spheres";
+    for (const bool is_paper : {true, false}) {
+        const fs::path run = test::fresh_test_directory("fddem_run_case_") / "sphere";
+        TestMonitor monitor;
+        const CaseConfig config = read_case_string(
+            sphere, "test:sphere",
+            {is_paper ? "coupling.markers=\"paper\"" : "coupling.markers=\"retracted\""});
+        ASSERT_EQ(run_case(config, run, monitor).outcome, RunResult::Outcome::completed);
+        EXPECT_EQ(monitor.has_message(warning), is_paper);
+        if (is_paper) {
+            EXPECT_TRUE(monitor.has_message("use \"retracted\""));
+        }
+    }
+    const fs::path run = test::fresh_test_directory("fddem_run_case_") / "disk";
+    TestMonitor monitor;
+    ASSERT_EQ(run_case(read_case_string(settling_disk_case, "test:disk"), run, monitor).outcome,
+              RunResult::Outcome::completed);
+    EXPECT_FALSE(monitor.has_message(warning));
+}
+
 } // namespace
 } // namespace fddem
