@@ -288,8 +288,9 @@ std::vector<KeySpec> case_schema()
                    "start at half its Δt (the controller then grows Δt back by at most 1.2× a "
                    "step). A step fails if its flow blows up, or if it ends above "
                    "time.retry_mass_residual or time.retry_courant. A step that still fails "
-                   "after the last retry is kept with a warning (a blow-up stops the run, exit "
-                   "status 3); no retry goes below time.min_dt. 0: never retry."),
+                   "after the last retry is kept as it is (solver.csv's retries column shows "
+                   "it; a blow-up stops the run, exit status 3); no retry goes below "
+                   "time.min_dt. 0: never retry."),
                0, 60, false, false),
         &CaseConfig::time, &TimeConfig::max_retries));
     s.push_back(bound(positive(key("time", "retry_mass_residual", T::real, none, "none",

@@ -128,6 +128,7 @@ StepReport Simulation<Dim>::advance()
 {
     // One grid array and the (small) body state per step: cheap beside the step itself.
     step_start_.p = state_.p;
+    step_start_.p_corr = state_.p_corr; // hypre's initial guess: a retry must start from it too
     step_start_.bodies = bodies_;
     step_start_.contacts = contact_history_;
     step_start_.clock = clock_;
@@ -137,6 +138,7 @@ StepReport Simulation<Dim>::advance()
     retry_dt_.reset();
     for (int retries = 0;; ++retries) {
         attempt_dt_ = 0.0; // set once choose_time_step() has chosen (a collapse is not retried)
+        is_step_begun_ = false;
         try {
             StepReport report = advance_unguarded();
             const std::string reason = retry_reason(retry_, report);
@@ -165,7 +167,8 @@ StepReport Simulation<Dim>::advance_unguarded()
         choose_time_step();
     }
     attempt_dt_ = clock_.dt;
-    begin_step(); // u^n, U^n, ω^n kept (and u^{n−1}, …); λ* = λ^n already
+    begin_step();
+    is_step_begun_ = true; // u^n, U^n, ω^n kept (and u^{n−1}, …); λ* = λ^n already
     const TimeLevels levels = time_levels(config_.time.scheme, clock_.dt, clock_.previous_dt);
     if (contacts_) {
         const ScopedPhase timer(times_, Phase::contact);
@@ -175,6 +178,12 @@ StepReport Simulation<Dim>::advance_unguarded()
     outer_.iterate({clock_.dt, levels, uniform_force_, clock_.step + 1, clock_.time + clock_.dt},
                    state_, bodies_, times_, report);
     measure_step(report);
+    if (!std::isfinite(report.courant) || !std::isfinite(report.mass_residual)) {
+        // The last outer iteration's projection can leave what the next one would have caught;
+        // caught here, the step is retried (or the run stops) at this step, not the next.
+        throw NumericalError(clock_.step + 1, clock_.time + clock_.dt, "the end of the step",
+                             locate_non_finite(grid_, state_) + ": the flow has blown up");
+    }
     if (!bodies_.empty()) {
         move_bodies_and_markers(levels); // eq. (17)
     }
@@ -302,12 +311,17 @@ void Simulation<Dim>::track_rest()
 template <int Dim>
 void Simulation<Dim>::roll_back_step()
 {
-    for (int a = 0; a < Dim; ++a) {
-        state_.u[a] = state_.u_n[a];     // advance() moved u^n here
-        state_.u_n[a] = state_.u_nm1[a]; // and u^{n−1} here
+    if (is_step_begun_) {
+        // begin_step() moved the levels on; a step stopped before it (its Δt collapsed, in
+        // choose_time_step) has u, u^n and u^{n−1} as they were.
+        for (int a = 0; a < Dim; ++a) {
+            state_.u[a] = state_.u_n[a];     // begin_step() moved u^n here
+            state_.u_n[a] = state_.u_nm1[a]; // and u^{n−1} here
+        }
+        is_step_begun_ = false;
     }
     state_.p = step_start_.p;
-    state_.p_corr.fill(0.0); // only hypre's initial guess
+    state_.p_corr = step_start_.p_corr;
     state_.divergence.fill(0.0);
     bodies_ = step_start_.bodies;
     contact_history_ = step_start_.contacts;

@@ -278,6 +278,7 @@ private:
     /// not here: the step keeps them in state_.u_n and state_.u_nm1 anyway.
     struct StepStart {
         GridArray<Dim> p;
+        GridArray<Dim> p_corr;
         Particles<Dim> bodies;
         ContactHistory<Dim> contacts;
         Clock clock;
@@ -288,8 +289,9 @@ private:
     RetrySettings retry_; ///< time.max_retries, time.retry_*
     /// The longest Δt the step being retried may take (half the failed attempt's) [s].
     std::optional<double> retry_dt_;
-    double attempt_dt_ = 0.0; ///< Δt of the step being taken; 0 before choose_time_step
-    std::string retry_note_;  ///< why the last step was retried, empty if it was not
+    double attempt_dt_ = 0.0;    ///< Δt of the step being taken; 0 before choose_time_step
+    bool is_step_begun_ = false; ///< begin_step() has moved u^n and u^{n−1} on for this step
+    std::string retry_note_;     ///< why the last step was retried, empty if it was not
 };
 
 } // namespace fddem
