@@ -331,6 +331,25 @@ TEST(CheckpointRestart, SphereOnTheFloorContinuesBitForBit3D)
     EXPECT_GT(in_contact, 0) << "the checkpoint should catch a contact in flight";
 }
 
+TEST(CheckpointRestart, ATurnedSphereContinuesBitForBit3D)
+{
+    // A sphere's markers are not exactly isotropic, so the fluid's second moment they stand
+    // for (eqs. (13)–(14)) turns with the body; it is derived from the orientation, not stored,
+    // and a restart that kept the body-frame one took a different first step (found on the
+    // 25-sphere pile, 2026-11-28).
+    const CaseConfig config = read_case_string(falling_balls_case(3), "test:spinning sphere",
+                                               {"bodies.omega=[30.0, 0.0, 40.0]"});
+    {
+        Simulation<3> probe(config);
+        for (int k = 0; k < 6; ++k) {
+            static_cast<void>(probe.advance());
+        }
+        EXPECT_LT(std::abs(probe.bodies().front().orientation.w()), 0.999)
+            << "the sphere should have turned by the checkpoint";
+    }
+    expect_bit_identical_continuation<3>(config, 6, 3);
+}
+
 TEST(CheckpointRestart, CavityWithReusedAssemblyContinuesBitForBit)
 {
     const CaseConfig config = read_case_string(cavity_case(), "test:cavity");
