@@ -52,8 +52,9 @@ inline std::vector<std::string> solver_rows_without_wall_time(const std::filesys
     return rows;
 }
 
-/// An empty directory under the system's temporary directory, named after `prefix`, the
-/// process and the running test, so that parallel tests never share one.
+/// An empty directory under the system's temporary directory, named after `prefix` (which
+/// starts with "fddem_"), the process and the running test, so that parallel tests never share
+/// one. test_main.cpp removes it when the test passes.
 inline std::filesystem::path fresh_test_directory(const std::string& prefix)
 {
     const std::filesystem::path dir =

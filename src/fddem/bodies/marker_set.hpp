@@ -5,6 +5,8 @@
 
 #include "fddem/core/vec.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace fddem {
@@ -28,6 +30,15 @@ struct MarkerSet {
             sum *= 2.0 / 3.0; // about one axis: ∫ |r⊥|² = ⅔ ∫ |r|² for an isotropic set
         }
         return sum;
+    }
+    /// The radius of the outermost marker shell, max |r_l| (0 for an empty set) [m].
+    [[nodiscard]] double outermost_radius() const
+    {
+        double largest = 0.0;
+        for (const Vec<Dim>& r : offsets) {
+            largest = std::max(largest, r.squaredNorm());
+        }
+        return std::sqrt(largest);
     }
 };
 

@@ -25,6 +25,15 @@ PairSide side_of(const Particle<Dim>& b)
     return ball_side(b.mass(), b.inertia(), b.radius(), b.material, b.is_free());
 }
 
+/// How far the outermost marker shell of `b` lies inside its surface [m] (0 without markers):
+/// its share of the gap the grid resolves (lubrication.resolved = "shells").
+template <int Dim>
+double outermost_shell_depth(const Particle<Dim>& b)
+{
+    const MarkerSet<Dim>& markers = b.coupling.markers;
+    return markers.size() == 0 ? 0.0 : std::max(0.0, b.radius() - markers.outermost_radius());
+}
+
 /// Contact forces and torques on every body at the current state, for one contact model; keeps
 /// the tangential springs of the open contacts and tracks the largest overlap.
 template <int Dim, class Model>
@@ -43,8 +52,10 @@ public:
     {
         neighbours_.set_walls(walls.origin, walls.length, walls.has_walls);
         radii_.reserve(bodies.size());
+        shell_depths_.reserve(bodies.size());
         for (const Particle<Dim>& b : bodies) {
             radii_.push_back(b.radius());
+            shell_depths_.push_back(outermost_shell_depth(b));
         }
     }
 
@@ -125,12 +136,14 @@ public:
             const auto b = static_cast<std::size_t>(j);
             const ContactGeometry<Dim> g =
                 ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]), domain_);
-            damp(g, bodies[a], &bodies[b], bodies[b].radius(), step, dt);
+            damp(g, bodies[a], &bodies[b], bodies[b].radius(), shell_depths_[a] + shell_depths_[b],
+                 step, dt);
         }
         for (const auto& [body, d, side] : neighbours_.walls()) {
             const auto a = static_cast<std::size_t>(body);
             const ContactGeometry<Dim> g = wall_contact(bodies[a], d, side);
-            damp(g, bodies[a], nullptr, std::numeric_limits<double>::infinity(), step, dt);
+            damp(g, bodies[a], nullptr, std::numeric_limits<double>::infinity(), shell_depths_[a],
+                 step, dt);
         }
     }
 
@@ -212,15 +225,16 @@ private:
         }
     }
 
-    /// One pair's (`second` null: a wall's) lubrication impulse. The relative surface velocity
+    /// One pair's (`second` null: a wall's) lubrication impulse; `shell_gap` the sum of the
+    /// pair's outermost_shell_depth. The relative surface velocity
     /// w at the contact point is damped by backward Euler, w ← w/(1 + c Δt_i K), K the pair's
     /// inverse effective mass along the normal (1/m1 + 1/m2) or across it (plus a²/J of each):
     /// exact for the linear damper the lubrication force is, whatever c Δt_i.
     void damp(const ContactGeometry<Dim>& g, Particle<Dim>& first, Particle<Dim>* second,
-              double second_radius, double step, double dt)
+              double second_radius, double shell_gap, double step, double dt)
     {
-        const LubricationResistance c =
-            lubrication_correction<Dim>(-g.overlap, first.radius(), second_radius, lubrication_);
+        const LubricationResistance c = lubrication_correction<Dim>(
+            -g.overlap, first.radius(), second_radius, lubrication_, shell_gap);
         if (c.normal == 0.0 && c.tangential == 0.0) {
             return;
         }
@@ -268,7 +282,8 @@ private:
     double stretch_ = 0.0;         ///< time over which the springs stretch now [s]
     std::vector<Vec<Dim>> centres_;
     std::vector<double> radii_;
-    NeighbourList<Dim> neighbours_; ///< candidates for this step's sub-steps
+    std::vector<double> shell_depths_; ///< outermost_shell_depth of each body [m]
+    NeighbourList<Dim> neighbours_;    ///< candidates for this step's sub-steps
     const LubricationSettings& lubrication_;
 
     static double largest_radius(std::span<const Particle<Dim>> bodies)

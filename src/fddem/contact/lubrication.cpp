@@ -60,7 +60,7 @@ LubricationResistance lubrication_resistance(double gap, double radius, double o
 
 template <int Dim>
 LubricationResistance lubrication_correction(double gap, double radius, double other_radius,
-                                             const LubricationSettings& settings)
+                                             const LubricationSettings& settings, double shell_gap)
 {
     const double roughness = settings.roughness * std::min(radius, other_radius);
     if (!settings.is_enabled || gap >= settings.range || roughness >= settings.range) {
@@ -69,19 +69,27 @@ LubricationResistance lubrication_correction(double gap, double radius, double o
     if (gap <= 0.0 && settings.in_contact == LubricationInContact::off) {
         return {}; // in contact: the contact model alone (Costa et al. 2015)
     }
-    const LubricationResistance near = lubrication_resistance<Dim>(
-        std::max(gap, roughness), radius, other_radius, settings.viscosity);
-    const LubricationResistance far =
-        lubrication_resistance<Dim>(settings.range, radius, other_radius, settings.viscosity);
-    return {std::max(0.0, near.normal - far.normal),
-            std::max(0.0, near.tangential - far.tangential)};
+    const auto c = [&](double h) {
+        return lubrication_resistance<Dim>(h, radius, other_radius, settings.viscosity);
+    };
+    const LubricationResistance near = c(std::max(gap, roughness));
+    LubricationResistance resolved = c(settings.range);
+    if (settings.resolved == LubricationResolved::shells) {
+        // The film between the marker shells, h + s, less its share at h_Δ (continuity).
+        const LubricationResistance shells = c(std::max(gap, roughness) + shell_gap);
+        const LubricationResistance shells_at_range = c(settings.range + shell_gap);
+        resolved.normal += shells.normal - shells_at_range.normal;
+        resolved.tangential += shells.tangential - shells_at_range.tangential;
+    }
+    return {std::max(0.0, near.normal - resolved.normal),
+            std::max(0.0, near.tangential - resolved.tangential)};
 }
 
 template LubricationResistance lubrication_resistance<2>(double, double, double, double);
 template LubricationResistance lubrication_resistance<3>(double, double, double, double);
 template LubricationResistance lubrication_correction<2>(double, double, double,
-                                                         const LubricationSettings&);
+                                                         const LubricationSettings&, double);
 template LubricationResistance lubrication_correction<3>(double, double, double,
-                                                         const LubricationSettings&);
+                                                         const LubricationSettings&, double);
 
 } // namespace fddem

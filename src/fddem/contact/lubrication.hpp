@@ -27,11 +27,17 @@
 ///                  reduced radius is used, an approximation (the exact split with the radius
 ///                  ratio, as the sphere's g_t has, is not derived).
 ///
-/// Breugem (2010, 2012) correction: the grid resolves the film down to a gap of about the
-/// activation distance h_Δ (`range`), so only the part it misses is added:
-///   c_corr(h) = c(max(h, h_σ)) − c(h_Δ)  for h < h_Δ,   0 for h ≥ h_Δ,
-/// which vanishes continuously at h_Δ and is held at its value at the roughness length h_σ
-/// for 0 < h < h_σ, where asperities touch (Breugem 2012, Costa et al. 2015 hold it at a
+/// What the grid resolves is subtracted (`lubrication.resolved`):
+/// - `range`, Breugem (2010, 2012): the grid resolves the film down to a gap of about the
+///   activation distance h_Δ (`range`) and no further, so only the part it misses is added:
+///     c_corr(h) = c(max(h, h_σ)) − c(h_Δ)  for h < h_Δ,   0 for h ≥ h_Δ.
+/// - `shells`, fddem's: the grid resolves the film between the bodies' outermost marker shells,
+///   which lie s = s1 + s2 farther apart than the surfaces (s_i the depth of body i's outermost
+///   marker shell below its surface, 0 for a wall; docs/method.md §5, "What the grid resolves"):
+///     c_corr(h) = [c(max(h, h_σ)) − c(h + s)] − [c(h_Δ) − c(h_Δ + s)]  for h < h_Δ, else 0.
+///   The bracket at h_Δ keeps it continuous there; it is small when h_Δ is a few s.
+/// Both vanish continuously at h_Δ and are held at their value at the roughness length h_σ for
+/// 0 < h < h_σ, where asperities touch (Breugem 2012, Costa et al. 2015 hold it at a
 /// roughness length in the same way).
 ///
 /// While the surfaces overlap (h ≤ 0, the contact model acting) the correction is switched off
@@ -53,6 +59,12 @@ enum class LubricationInContact {
     saturated, ///< held at c(h_σ), as for 0 < h < h_σ
 };
 
+/// What the grid is taken to resolve of the film (lubrication.resolved).
+enum class LubricationResolved {
+    range,  ///< the resistance up to h_Δ and no more (Breugem 2010, 2012)
+    shells, ///< the resistance of the gap between the outermost marker shells, h + s
+};
+
 /// [lubrication] of a case, in SI units as the DEM uses it.
 struct LubricationSettings {
     bool is_enabled = false; ///< off: the sub-steps are the dry DEM's, bit for bit
@@ -60,6 +72,7 @@ struct LubricationSettings {
     double range = 0.0;      ///< activation gap h_Δ [m] (the case gives it in grid spacings)
     double roughness = 1e-3; ///< h_σ as a fraction of the smaller radius
     LubricationInContact in_contact = LubricationInContact::off; ///< while overlapping
+    LubricationResolved resolved = LubricationResolved::range;   ///< what the grid resolves
 };
 
 /// Resistance coefficients of one gap [N·s/m] (2D: per unit length).
@@ -75,13 +88,14 @@ template <int Dim>
 [[nodiscard]] LubricationResistance lubrication_resistance(double gap, double radius,
                                                            double other_radius, double viscosity);
 
-/// The Breugem correction c(max(h, h_σ)) − c(h_Δ) for h < h_Δ, else 0. h ≤ 0 (overlapping):
-/// 0, or held at h_σ if settings.in_contact is `saturated`. h_σ = settings.roughness × the
-/// smaller radius.
+/// The correction for h < h_Δ, else 0: c(max(h, h_σ)) − c(h_Δ) (settings.resolved `range`),
+/// or [c(max(h, h_σ)) − c(h + s)] − [c(h_Δ) − c(h_Δ + s)] (`shells`, s = `shell_gap`, the sum
+/// of the two bodies' outermost_shell_depth). h ≤ 0 (overlapping): 0, or held at h_σ if
+/// settings.in_contact is `saturated`. h_σ = settings.roughness × the smaller radius.
 template <int Dim>
-[[nodiscard]] LubricationResistance lubrication_correction(double gap, double radius,
-                                                           double other_radius,
-                                                           const LubricationSettings& settings);
+[[nodiscard]] LubricationResistance
+lubrication_correction(double gap, double radius, double other_radius,
+                       const LubricationSettings& settings, double shell_gap = 0.0);
 
 /// Backward-Euler update of a relative velocity w under a linear damper c over Δt_i, with
 /// `inverse_mass` the sum of the bodies' inverse (effective) masses: w / (1 + c Δt_i/m*).

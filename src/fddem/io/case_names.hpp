@@ -112,6 +112,11 @@ constexpr auto case_names(LubricationInContact /*tag*/)
     using enum LubricationInContact;
     return std::to_array<EnumName<LubricationInContact>>({{off, "off"}, {saturated, "saturated"}});
 }
+constexpr auto case_names(LubricationResolved /*tag*/)
+{
+    using enum LubricationResolved;
+    return std::to_array<EnumName<LubricationResolved>>({{range, "range"}, {shells, "shells"}});
+}
 /// The contact models by the names of their registry (contact/contact_models.cpp).
 [[nodiscard]] std::vector<EnumName<ContactModelKind>> case_names(ContactModelKind /*tag*/);
 

@@ -665,6 +665,14 @@ std::vector<KeySpec> case_schema()
                           "behaviour; with the adaptive model's stretched collision it takes most "
                           "of the impact energy: docs/method.md §5)."),
                       &CaseConfig::lubrication, &LubricationConfig::in_contact));
+    s.push_back(bound(key("lubrication", "resolved", T::string, none, "\"range\"",
+                          "What the grid is taken to resolve of the film, subtracted from the "
+                          "analytic resistance c: range (c at lubrication.range and no more, "
+                          "Breugem 2012) or shells (c of the gap between the bodies' outermost "
+                          "marker shells, the gap plus their depths below the surfaces: the "
+                          "retraction for the retracted layout; with it a range of several h, "
+                          "e.g. 8; docs/method.md §5, \"What the grid resolves\")."),
+                      &CaseConfig::lubrication, &LubricationConfig::resolved));
 
     s.push_back(
         bound(positive(key("nondimensional", "reynolds", T::real, none, "none",

@@ -213,6 +213,7 @@ struct LubricationConfig {
     double range = 2.0;      ///< activation gap h_Δ in grid spacings h (the largest spacing)
     double roughness = 1e-3; ///< saturation gap h_σ as a fraction of the smaller radius
     LubricationInContact in_contact = LubricationInContact::off; ///< while the surfaces overlap
+    LubricationResolved resolved = LubricationResolved::range;   ///< what the grid resolves
 };
 
 /// [nondimensional]: given, fddem derives viscosity, gravity and body densities.

@@ -197,9 +197,9 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
     // Lubrication acts up to its range h_Δ (in the largest grid spacing): the DEM's neighbour
     // list must reach that far when it is on.
     const LubricationConfig& lub = config.lubrication;
-    const LubricationSettings lubrication{lub.is_enabled, config.fluid.viscosity,
-                                          lub.range * grid.spacing().maxCoeff(), lub.roughness,
-                                          lub.in_contact};
+    const LubricationSettings lubrication{
+        lub.is_enabled, config.fluid.viscosity, lub.range * grid.spacing().maxCoeff(),
+        lub.roughness,  lub.in_contact,         lub.resolved};
     const double reach = std::max(contact.margin, lubrication.is_enabled ? lubrication.range : 0.0);
     return ContactSetup<Dim>{DemSettings{std::move(*model), contact.velocity_damping,
                                          std::max(1, substeps), contact.margin, lubrication},

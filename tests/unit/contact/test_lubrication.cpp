@@ -3,6 +3,7 @@
 // Brenner's (1961) exact series at small gaps, the two-sphere coefficients of Jeffrey & Onishi
 // (1984) for equal spheres, the disks' power laws, the Breugem correction (zero at and beyond
 // the range, held below the roughness, zero while overlapping unless in_contact = saturated),
+// the marker-shell correction (resolved = shells) and its premise against Brenner,
 // equal and opposite pair impulses in the sub-steps, the implicit damping's stability with
 // c Δt_i / m far above 1, and an adaptive collision through the film that keeps e_dry.
 
@@ -149,12 +150,76 @@ TEST(Lubrication, CorrectionVanishesAtRangeAndSaturatesAtRoughness)
     check_correction<3>();
 }
 
+template <int Dim>
+void check_shells()
+{
+    // resolved = shells: [c(h) − c(h + s)] − [c(h_Δ) − c(h_Δ + s)] below h_Δ, s the marker
+    // shells' depths (docs/method.md §5, "What the grid resolves").
+    const double a = 0.1;
+    LubricationSettings s{true, 1e-3, 0.05, 1e-3}; // range 0.5 a, roughness 1e-4 m
+    s.resolved = LubricationResolved::shells;
+    const double shell = 0.006; // 0.3 h of each of two spheres at h = a/4 (d/h = 8)
+    const auto c = [&](double gap) { return lubrication_resistance<Dim>(gap, a, a, 1e-3); };
+    const auto corr = [&](double gap, double depth) {
+        return lubrication_correction<Dim>(gap, a, a, s, depth);
+    };
+    for (const double gap : {1e-3, 0.01, 0.03}) {
+        const LubricationResistance expected{c(gap).normal - c(gap + shell).normal -
+                                                 c(0.05).normal + c(0.05 + shell).normal,
+                                             c(gap).tangential - c(gap + shell).tangential -
+                                                 c(0.05).tangential + c(0.05 + shell).tangential};
+        EXPECT_NEAR(corr(gap, shell).normal, expected.normal, 1e-12 * c(gap).normal) << gap;
+        EXPECT_NEAR(corr(gap, shell).tangential, expected.tangential,
+                    1e-12 * c(gap).tangential + 1e-15)
+            << gap;
+    }
+    // Zero at and beyond the range, continuous there, and none without shells (the film the
+    // grid resolves is then the gap itself).
+    EXPECT_EQ(corr(0.05, shell).normal, 0.0);
+    EXPECT_LT(corr(0.05 * (1.0 - 1e-9), shell).normal, 1e-6 * corr(1e-3, shell).normal);
+    EXPECT_EQ(corr(1e-3, 0.0).normal, 0.0);
+    // Deeper shells: the grid resolves less, so more is added; the Breugem correction with the
+    // same range subtracts c(h_Δ), which is less than c(h + s) for h + s < h_Δ.
+    EXPECT_GT(corr(1e-3, 2.0 * shell).normal, corr(1e-3, shell).normal);
+    LubricationSettings breugem = s;
+    breugem.resolved = LubricationResolved::range;
+    EXPECT_LT(corr(1e-3, shell).normal, lubrication_correction<Dim>(1e-3, a, a, breugem).normal);
+    // Held below the roughness, and none while overlapping (in_contact = off).
+    EXPECT_EQ(corr(1e-12, shell).normal, corr(1e-4, shell).normal);
+    EXPECT_EQ(corr(-1e-6, shell).normal, 0.0);
+}
+
+TEST(Lubrication, ShellsSubtractTheFilmBetweenTheMarkerShells)
+{
+    check_shells<2>();
+    check_shells<3>();
+}
+
+TEST(Lubrication, ShellsModelRestoresBrennerWhereTheGridSeesTheGapWidened)
+{
+    // The premise of resolved = shells: the grid's force on a sphere near a wall is the exact
+    // force at the gap widened by the shell depth s. Given that (Brenner's exact κ at δ + s,
+    // shared/reference/sphere_wall_brenner.csv), the total with the correction is Brenner's at
+    // δ up to what the leading terms leave out between δ and δ + s: within 0.5 % (0.03-0.25 %
+    // computed) for s = 0.1 a (0.4 h at d/h = 8) and a range of 2 a, at δ/a = 0.1 … 0.4.
+    const std::array<double, 5> brenner{11.459157, 6.340887, 4.610720, 3.735617, 3.205390};
+    LubricationSettings s{true, 1.0, 2.0, 1e-3}; // μ = 1, a = 1, range 2 a
+    s.resolved = LubricationResolved::shells;
+    for (std::size_t i = 0; i + 1 < brenner.size(); ++i) {
+        const double ratio = 0.1 * static_cast<double>(i + 1); // δ/a = 0.1 … 0.4
+        const double added =
+            lubrication_correction<3>(ratio, 1.0, wall, s, 0.1).normal / (6.0 * pi);
+        EXPECT_NEAR((brenner[i + 1] + added) / brenner[i], 1.0, 5e-3) << "δ/a = " << ratio;
+    }
+}
+
 TEST(Lubrication, DefaultIsOffAndNoneInContact)
 {
     const DemSettings settings{HertzMindlin{}, 0.0, 1};
     EXPECT_FALSE(settings.lubrication.is_enabled);
     EXPECT_FALSE(LubricationSettings{}.is_enabled);
     EXPECT_EQ(LubricationSettings{}.in_contact, LubricationInContact::off);
+    EXPECT_EQ(LubricationSettings{}.resolved, LubricationResolved::range);
 }
 
 /// DEM settings with a contact model that never acts here (the bodies stay apart) and

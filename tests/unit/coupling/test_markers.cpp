@@ -61,6 +61,7 @@ TYPED_TEST(Markers, RetractedLayoutKeepsTheVolumeAndPutsTheLastRingInsideBy)
         }
         EXPECT_NEAR(volume / ball.volume(), 1.0, 1e-13);
         EXPECT_NEAR(outermost, ball.radius() - retraction, 1e-14);
+        EXPECT_EQ(set.outermost_radius(), outermost); // the lubrication's shell depth R − it
         // (R − r)/(2 h) = 8, 7.85, 7.65 → 8 rings of spacing ≈ 2 h.
         EXPECT_EQ(n_rings, 8);
         EXPECT_NEAR(set.spacing, (ball.radius() - retraction) / 8, 1e-15);
@@ -78,6 +79,8 @@ TEST(Markers, RetractedLayoutWithoutRetractionIsNotThePapers)
     const auto surface = make_retracted_ball_markers(Ball<2>{2.0}, 6, 0.0);
     EXPECT_NEAR(paper.offsets.back().norm(), 6.0 / 6.5, 1e-15);
     EXPECT_NEAR(surface.offsets.back().norm(), 1.0, 1e-15);
+    EXPECT_NEAR(paper.outermost_radius(), 6.0 / 6.5, 1e-15);
+    EXPECT_EQ(MarkerSet<2>{}.outermost_radius(), 0.0);
     EXPECT_EQ(paper.size(), surface.size());
 }
 
