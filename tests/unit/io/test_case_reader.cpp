@@ -64,7 +64,8 @@ TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
     EXPECT_EQ(name_of(c.simple.convection), "central");
     EXPECT_FALSE(c.lubrication.is_enabled);
     EXPECT_EQ(name_of(c.lubrication.in_contact), "off"); // the schema's documented default
-    EXPECT_EQ(c.simple.min_outer_iterations_dem, 2);     // the schema's documented defaults
+    EXPECT_EQ(name_of(c.lubrication.resolved), "range");
+    EXPECT_EQ(c.simple.min_outer_iterations_dem, 2); // the schema's documented defaults
     EXPECT_FALSE(c.simple.is_mass_residual_held);
     EXPECT_TRUE(c.coupling.is_adjoint_at_walls);
     ASSERT_EQ(c.output.lines.size(), 1U);
@@ -381,6 +382,13 @@ std::vector<BadCase> bad_cases()
          20,
          "lubrication.in_contact",
          "did you mean 'saturated'"},
+        {"misspelt_lubrication_resolved",
+         v + "[lubrication]\nenabled = true\nresolved = \"shell\"\n",
+         {},
+         f,
+         20,
+         "lubrication.resolved",
+         "did you mean 'shells'"},
         {"lubrication_in_contact_not_a_word",
          v + "[lubrication]\nin_contact = false\n",
          {},
