@@ -7,7 +7,8 @@
 // every field and particle frame, the line samples and the .pvd collections byte for byte as
 // the uninterrupted run; so does a finished fluid-only run extended to a later end. Bad restart
 // input ends with one message, exit status 2, and changes nothing. A BDF2 run continued from a
-// checkpoint is the uninterrupted one as well.
+// checkpoint is the uninterrupted one as well. A body let go by bodies.release_time is the run
+// stopped at the release and continued with the body made free.
 
 #include <gtest/gtest.h>
 
@@ -328,6 +329,79 @@ points = 17
     EXPECT_EQ(file_contents(longer / "fields.pvd"), file_contents(extended / "fields.pvd"));
     EXPECT_EQ(file_contents(longer / "samples/centre.csv"),
               file_contents(extended / "samples/centre.csv"));
+}
+
+/// A disk towed down at 1 m/s and let go at t = 0.1 s by bodies.release_time, as one run, and
+/// as the two runs a user would otherwise make: the towed part to t = 0.1 s, then a restart with
+/// the disk made free. `time_keys`: the [time] table's lines besides the end.
+void expect_release_is_the_two_stage_run(const fs::path& root, const fs::path& log,
+                                         const std::string& time_keys)
+{
+    const std::string towed = R"([domain]
+size = [1.0, 2.0]
+cells = [32, 64]
+[fluid]
+density = 1.0
+viscosity = 0.01
+gravity = [0.0, -9.81]
+[[bodies]]
+diameter = 0.25
+density = 4.0
+position = [0.5, 1.6]
+velocity = [0.0, -1.0]
+motion = "prescribed"
+n_rings = 3
+RELEASE[time]
+)" + time_keys + R"(end = 0.3
+[simple]
+tolerance = 1e-3
+max_outer_iterations = 20
+fft_planning = "estimate"
+[output]
+field_interval = 0.0
+particle_interval = 0.0
+)";
+    const auto write = [&](const std::string& name, const std::string& release) {
+        std::string text = towed;
+        text.replace(text.find("RELEASE"), 7, release);
+        std::ofstream(root / name) << text;
+        return (root / name).string();
+    };
+    const fs::path one = root / "released";
+    const fs::path two = root / "two_stages";
+    Result r = fddem::test::run_fddem("run " + write("released.toml", "release_time = 0.1\n") +
+                                          " -o " + one.string() + " -q",
+                                      log);
+    ASSERT_EQ(r.status, 0) << r.output;
+    r = fddem::test::run_fddem(
+        "run " + write("towed.toml", "") + " -o " + two.string() + " -q --set time.end=0.1", log);
+    ASSERT_EQ(r.status, 0) << r.output;
+    r = fddem::test::run_fddem(
+        "run --restart " + two.string() + " -q --set bodies.1.motion=free --set time.end=0.3", log);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(solver_rows_without_wall_time(one), solver_rows_without_wall_time(two));
+    const std::string particles = file_contents(one / "particles.csv");
+    EXPECT_TRUE(particles == file_contents(two / "particles.csv"));
+    // It was let go: the last row's speed is past the 1 m/s it was towed at.
+    const std::vector<std::string> rows = lines_of(particles);
+    ASSERT_GT(rows.size(), 2U);
+    std::istringstream last(rows.back());
+    std::vector<double> cells;
+    for (std::string cell; std::getline(last, cell, ',');) {
+        cells.push_back(std::stod(cell));
+    }
+    EXPECT_LT(cells.at(5), -1.5) << rows.front() << "\n" << rows.back(); // v [m/s]
+}
+
+TEST_F(Restart, ReleasedBodyIsTheTwoStageRunAtAFixedStep)
+{
+    expect_release_is_the_two_stage_run(root_, log_, "dt = 0.01\n");
+}
+
+TEST_F(Restart, ReleasedBodyIsTheTwoStageRunWithTheCourantLimit)
+{
+    // The controlled step lands on the release (0.1 s is not a multiple of its steps).
+    expect_release_is_the_two_stage_run(root_, log_, "dt = 0.013\nmax_courant = 0.4\n");
 }
 
 TEST_F(Restart, KilledRunRestartsToTheSameResults)

@@ -13,6 +13,7 @@
 #include "fddem/bodies/orientation.hpp"
 #include "fddem/core/vec.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace fddem {
@@ -76,6 +77,9 @@ struct Particle {
     Ball<Dim> shape{1.0};
     double density = 1.0; ///< ρs [kg/m³]
     Motion motion = Motion::free;
+    /// A prescribed body becomes free from this time on [s] (bodies.release_time; the
+    /// simulation releases it at the start of a step: release_due()).
+    std::optional<double> release_time;
     Material material{}; ///< its surface, for contacts
 
     Vec<Dim> centre = Vec<Dim>::Zero();             ///< [m]
@@ -105,6 +109,17 @@ struct Particle {
     }
     /// Moved by the fluid and by contacts; a fixed or prescribed body is not.
     [[nodiscard]] bool is_free() const noexcept { return motion == Motion::free; }
+    /// Free now, or prescribed until its release: collisions must be set up for it.
+    [[nodiscard]] bool moves_freely() const noexcept
+    {
+        return is_free() || (motion == Motion::prescribed && release_time);
+    }
+    /// A prescribed body whose release time has come at `time` [s]. `tolerance` [s] absorbs the
+    /// round-off of a clock that landed on the release time.
+    [[nodiscard]] bool release_due(double time, double tolerance) const noexcept
+    {
+        return motion == Motion::prescribed && release_time && time >= *release_time - tolerance;
+    }
 };
 
 } // namespace fddem

@@ -69,6 +69,12 @@ public:
         return std::any_of(items_.begin(), items_.end(),
                            [](const Particle<Dim>& p) { return p.is_free(); });
     }
+    /// A body free now or released later (Particle::moves_freely): what collisions need.
+    [[nodiscard]] bool has_moving_body() const
+    {
+        return std::any_of(items_.begin(), items_.end(),
+                           [](const Particle<Dim>& p) { return p.moves_freely(); });
+    }
 
 private:
     iterator lower_bound(int id)

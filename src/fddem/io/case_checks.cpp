@@ -21,7 +21,7 @@ namespace {
 bool has_free_body(const CaseConfig& c)
 {
     return std::any_of(c.bodies.begin(), c.bodies.end(),
-                       [](const BodyConfig& b) { return b.motion == Motion::free; });
+                       [](const BodyConfig& b) { return moves_freely(b); });
 }
 
 /// A way to stop, a pseudo-time march that can arrive, an end after the earliest end.
@@ -270,6 +270,12 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
                       fmt::format("{} is {:.2g} cells across; at least {:g} are needed for "
                                   "the marker layout (refine domain.cells)",
                                   body_name(doc, b), b.diameter / h, min_cells_across));
+        }
+        if (b.release_time && b.motion != Motion::prescribed) {
+            fail_body(doc, b, "release_time", "release_time",
+                      fmt::format("{} is {}: bodies.release_time lets go of a prescribed body "
+                                  "(set motion = \"prescribed\", or remove the release time)",
+                                  body_name(doc, b), name_of(b.motion)));
         }
         const double r = 0.5 * b.diameter;
         for (std::size_t d = 0; d < dimension; ++d) {

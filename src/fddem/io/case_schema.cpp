@@ -444,6 +444,16 @@ std::vector<KeySpec> case_schema()
                              "free (moved by fluid and gravity), prescribed (keeps its velocity), "
                              "fixed (at rest)."),
                          &BodyConfig::motion));
+    s.push_back(body_key(
+        ranged(key("bodies", "release_time", T::real, "s", "none",
+                   "A prescribed body moves freely (as motion = \"free\") from this time on, "
+                   "from the velocity it was given: a body brought to a speed and then let go, "
+                   "in one run (e.g. a sphere's approach to a wall at a measured impact speed). "
+                   "With time.max_courant a step ends on it; with the fixed time.dt the body is "
+                   "released at the first step that starts at or after it. Prescribed bodies "
+                   "only."),
+               0.0, inf, false, false),
+        &BodyConfig::release_time));
     s.push_back(
         body_key(ranged(key("bodies", "n_rings", T::integer, none, "0",
                             "Marker rings N_a (paper Fig. 1: 1 + 3 N_a (N_a + 1) markers); 0: "

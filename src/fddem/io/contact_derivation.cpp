@@ -243,7 +243,7 @@ BodySide body_side(const BodyConfig& b)
     const Ball<Dim> ball{b.diameter};
     const double mass = b.density * ball.volume();
     return {mass, ball_side(mass, b.density * ball.second_moment(), ball.radius(), b.material,
-                            b.motion == Motion::free)};
+                            moves_freely(b))};
 }
 
 /// N_i: `contact.substeps`, or enough for 80 sub-steps in the shortest collision `shortest`
@@ -340,7 +340,7 @@ void derive_contact(CaseDocument& doc, CaseConfig& c)
     for (const BodyConfig& b : c.bodies) {
         const BodySide body = c.domain.dimension == 2 ? body_side<2>(b) : body_side<3>(b);
         sides.push_back(body.side);
-        if (b.motion == Motion::free && body.mass < lightest) {
+        if (moves_freely(b) && body.mass < lightest) {
             lightest = body.mass;
             lightest_side = body.side;
         }

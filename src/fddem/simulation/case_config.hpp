@@ -123,6 +123,9 @@ struct BodyConfig {
     std::vector<double> velocity; ///< initial (or prescribed) U [m/s]
     std::vector<double> omega;    ///< initial (or prescribed) ω [rad/s]: ω_z (2D), ω (3D)
     Motion motion = Motion::free;
+    /// A prescribed body moves freely from this time on [s] (bodies.release_time): a run that
+    /// brings a body to a given speed, then lets it go, in one command.
+    std::optional<double> release_time;
     int n_rings = 0; ///< N_a; 0: from coupling.marker_spacing_ratio
     SurfaceKeys surface;
     Material material; ///< its surface: `surface`, else [contact]'s (derived)
@@ -132,6 +135,13 @@ struct BodyConfig {
     std::string file;
     int file_line = 0;
 };
+
+/// Moved by the fluid and by contacts at some time of the run: free, or prescribed until its
+/// release. What a case derives for collisions (stiffness, sub-steps) counts such a body.
+[[nodiscard]] inline bool moves_freely(const BodyConfig& b) noexcept
+{
+    return b.motion == Motion::free || (b.motion == Motion::prescribed && b.release_time);
+}
 
 /// How a [[bodies]] entry gives its bodies (io/body_entries.hpp): one at its `position`; one
 /// per row of `file`; or `count` (or `volume_fraction`'s worth) inserted at random.

@@ -95,12 +95,38 @@ void Simulation<Dim>::choose_time_step()
                         "short are expected, lower time.min_dt)",
                         *step_control_.max_courant / speed_per_cell, min_dt));
     }
-    double dt =
-        next_time_step(step_control_, clock_.dt, clock_.time, speed_per_cell, step_history_);
+    double dt = next_time_step(step_control_, clock_.dt, clock_.time, speed_per_cell, step_history_,
+                               next_release());
     if (retry_dt_) {
         dt = std::min(dt, *retry_dt_); // a retry: half the failed attempt's Δt, or less
     }
     set_time_step(dt);
+}
+
+template <int Dim>
+void Simulation<Dim>::release_bodies()
+{
+    // A landed clock is within round-off of the release; a thousandth of time.dt absorbs it
+    // without releasing a step early.
+    const double tolerance = 1e-3 * config_.time.dt;
+    for (Particle<Dim>& body : bodies_) {
+        if (body.release_due(clock_.time, tolerance)) {
+            body.motion = Motion::free; // from the velocity it was prescribed
+        }
+    }
+}
+
+template <int Dim>
+std::optional<double> Simulation<Dim>::next_release() const
+{
+    std::optional<double> next;
+    for (const Particle<Dim>& body : bodies_) {
+        if (body.motion == Motion::prescribed && body.release_time &&
+            (!next || *body.release_time < *next)) {
+            next = body.release_time;
+        }
+    }
+    return next;
 }
 
 template <int Dim>
@@ -163,6 +189,7 @@ template <int Dim>
 StepReport Simulation<Dim>::advance_unguarded()
 {
     StepReport report;
+    release_bodies();
     if (config_.time.max_courant || config_.time.is_steady) {
         choose_time_step();
     }

@@ -224,6 +224,11 @@ private:
 
     // The stages of advance(), in its order.
     StepReport advance_unguarded();
+    /// Frees the prescribed bodies whose bodies.release_time has come (at the start of a
+    /// step, before its Δt is chosen: a released body's buoyant weight counts in it).
+    void release_bodies();
+    /// The earliest release time still ahead, on which the controlled step lands.
+    [[nodiscard]] std::optional<double> next_release() const;
     /// Δt of the next step by time.max_courant or time.steady (time_step_control.hpp).
     void choose_time_step();
     /// Keeps the level-n state: u^{n−1} ← u^n ← u, U^{n−1} ← U^n ← U, ω^{n−1} ← ω^n ← ω

@@ -138,6 +138,7 @@ Particles<Dim> make_particles(const CaseConfig& config, const MacGrid<Dim>& grid
         body.density = b.density;
         body.material = b.material;
         body.motion = b.motion;
+        body.release_time = b.release_time;
         body.centre = grid.domain().wrap(vector_of<Dim>(b.position)); // in the box
         if (body.motion != Motion::fixed) {
             body.velocity = vector_of<Dim>(b.velocity);
@@ -159,7 +160,7 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
 {
     // Without a free body nothing can collide; the lubrication still acts on (and is reported
     // for) prescribed bodies near walls and each other when it is on.
-    if (bodies.empty() || (!bodies.has_free_body() && !config.lubrication.is_enabled)) {
+    if (bodies.empty() || (!bodies.has_moving_body() && !config.lubrication.is_enabled)) {
         return std::nullopt;
     }
     const ContactConfig& contact = config.contact;
@@ -167,7 +168,7 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
     // that cannot move) and the case derived no model: a placeholder stands in, and the
     // sub-steps are contact.substeps as given (at least 1), over which the lubrication is
     // averaged.
-    const bool can_collide = bodies.has_free_body();
+    const bool can_collide = bodies.has_moving_body();
     std::optional<AnyContactModel> model =
         can_collide ? make_contact_model(contact.model, contact_model_input(config))
                     : std::optional<AnyContactModel>(LinearSpringDashpot({1.0, 0.0}, 1.0));

@@ -45,8 +45,27 @@ bool may_retry(const TimeStepSettings& settings, const RetrySettings& retry, int
            0.5 * dt >= min_dt;
 }
 
+namespace {
+
+/// `next` shortened to land on a time `left` [s] ahead rather than step past it or stop short
+/// of it: the last one or two steps share what is left evenly; a remainder within a hundredth
+/// of a step is taken in one.
+double land(double next, double left) noexcept
+{
+    if (left > 0.0 && left < next * 1.01) {
+        return left;
+    }
+    if (left > 0.0 && left < 2.0 * next) {
+        return 0.5 * left;
+    }
+    return next;
+}
+
+} // namespace
+
 double next_time_step(const TimeStepSettings& settings, double dt, double time,
-                      double speed_per_cell, const TimeStepHistory& history)
+                      double speed_per_cell, const TimeStepHistory& history,
+                      std::optional<double> landing)
 {
     double next = dt;
     if (settings.is_steady) {
@@ -64,15 +83,13 @@ double next_time_step(const TimeStepSettings& settings, double dt, double time,
     if (settings.max_courant && speed_per_cell > 0.0) {
         next = std::min(next, *settings.max_courant / speed_per_cell);
     }
-    if (settings.end_time && !settings.is_steady) {
-        // Land on the end time rather than step past it or stop short of it (the end test
-        // allows half a step): the last one or two steps share what is left evenly; a remainder
-        // within a hundredth of a step is taken in one.
-        const double left = *settings.end_time - time;
-        if (left > 0.0 && left < next * 1.01) {
-            next = left;
-        } else if (left > 0.0 && left < 2.0 * next) {
-            next = 0.5 * left;
+    if (!settings.is_steady) {
+        // The end test allows half a step; a release is met exactly (to round-off).
+        if (landing) {
+            next = land(next, *landing - time);
+        }
+        if (settings.end_time) {
+            next = land(next, *settings.end_time - time);
         }
     }
     return next;

@@ -85,8 +85,11 @@ struct RetrySettings {
                              int retries, double dt, double min_dt) noexcept;
 
 /// Δt [s] for a step from `time` [s] after one of `dt` [s], given the largest speed per cell
-/// `speed_per_cell` = max |u|/h over the fluid and the bodies [1/s] now. Pure.
+/// `speed_per_cell` = max |u|/h over the fluid and the bodies [1/s] now. The step lands on the
+/// end time and on `landing` [s], if given and ahead (a body's release: bodies.release_time),
+/// rather than stepping past them. Pure.
 [[nodiscard]] double next_time_step(const TimeStepSettings& settings, double dt, double time,
-                                    double speed_per_cell, const TimeStepHistory& history);
+                                    double speed_per_cell, const TimeStepHistory& history,
+                                    std::optional<double> landing = std::nullopt);
 
 } // namespace fddem

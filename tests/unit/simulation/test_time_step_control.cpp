@@ -82,6 +82,20 @@ TEST(TimeStepControl, LastStepLandsOnTheEndTime)
     EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.85, 1.0, {}), 0.075); // two equal last steps
 }
 
+TEST(TimeStepControl, StepLandsOnABodysReleaseAsOnTheEndTime)
+{
+    const TimeStepSettings s{0.1, 0.5, false, 2.0, 1.2};
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.95, 1.0, {}, 1.0), 1.0 - 0.95);
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.85, 1.0, {}, 1.0), 0.075); // two equal steps
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.5, 1.0, {}, 1.0), 0.1);    // far ahead
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 1.2, 1.0, {}, 1.0), 0.1);    // passed: none
+    // The end time still wins where it comes first.
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 1.95, 1.0, {}, 3.0), 2.0 - 1.95);
+    // A fixed-step march (no Courant limit) lands on it too when the controller runs.
+    const TimeStepSettings fixed{0.1, std::nullopt, false, std::nullopt, 1.2};
+    EXPECT_DOUBLE_EQ(next_time_step(fixed, 0.1, 0.97, 0.0, {}, 1.0), 1.0 - 0.97);
+}
+
 TEST(TimeStepControl, SerFollowsTheResidualWithinItsBounds)
 {
     const TimeStepSettings s{0.01, std::nullopt, true, std::nullopt, 2.0};
