@@ -36,6 +36,9 @@ from .references import SOURCE_ROOT
 REFERENCE_DIRECTORY = os.path.join(SOURCE_ROOT, "cases", "validation", "rebound_stokes")
 LABEL = "Gondret et al. (2002), measured"
 FIT_WINDOW = (0.02, 1.0)  # gap / d of the samples the velocity fits use
+# Legendre, Zenit, Daniel & Guiraud (2006): e/e_dry = exp(−β/St), β = 35
+# (cases/validation/rebound_stokes/legendre2006_fit.md).
+LEGENDRE_BETA = 35.0
 # case: diameter [m], impact speed [m/s] and St of Biegert, Vowinckel & Meiburg (2017) Table 1,
 # the published peak heights (gap/d) of SOURCE.md, and whether the file holds the approach.
 CASES = {
@@ -261,3 +264,68 @@ def plot(axes, run_dirs, case, labels=None):
     axes.axhline(0.0, color="0.5", lw=0.8)
     axes.set_xlabel("t − t_contact [s]")
     axes.set_ylabel("gap / d")
+
+
+def legendre_fit(stokes):
+    """e/e_dry of Legendre et al.'s (2006) fit at St."""
+    return math.exp(-LEGENDRE_BETA / stokes)
+
+
+def restitution(run_dir):
+    """St, v_in, v_out, e_eff, e_eff/e_dry ("ratio") and the contact's speed ratio of one rebound
+    run, as a dict. St = ρp v_in d/(9μ) at the impact speed v_in measured from the trajectory
+    (as the experiments define it); a sphere that never touches (the film stops it) has St at
+    its speed at the closest approach and the ratio 0 (no rebound); one that touches and does not
+    leave the wall again, the ratio 0 too."""
+    case = io.read_case(run_dir)
+    body = case["bodies"][0]
+    density = float(body["density"])
+    viscosity = float(case["fluid"]["viscosity"])
+    e_dry = float(case.get("contact", {}).get("restitution", 1.0))
+    t, gap, w, diameter = run_trajectory(run_dir)
+    try:
+        result = measure(t, gap, diameter=diameter)
+    except ValueError:  # never at the wall: no contact, no rebound
+        k = int(np.argmin(gap))
+        result = {"t_contact": None, "peaks": [], "v_in": None, "v_out": None, "e_eff": None,
+                  "touch": float(-w[k]), "separation": None, "e_contact": None}
+    else:
+        result.update(touch_speeds(t, gap, w, result["t_contact"]))
+    v_in = -result["v_in"] if result["v_in"] is not None else result["touch"]
+    result["stokes"] = density * v_in * diameter / (9.0 * viscosity)
+    result["e_dry"] = e_dry
+    result["ratio"] = 0.0 if result["e_eff"] is None else result["e_eff"] / e_dry
+    result["rebounds"] = result["e_eff"] is not None
+    return result
+
+
+def gondret_restitution_points():
+    """(St, e_eff/e_dry) of Gondret's two digitised trajectories, measured as the runs are, St
+    at the published impact speed (Biegert et al. 2017 Table 1, CASES), e_dry = 0.97. The St 27
+    file starts at the contact: there v_out over the published impact speed."""
+    points = []
+    for name, spec in sorted(CASES.items()):
+        t, gap = load_reference(name)
+        r = measure(t, gap, t_c=None if spec["has_approach"] else 0.0, diameter=spec["diameter"])
+        if r["e_eff"] is not None:
+            points.append((spec["stokes"], r["e_eff"] / 0.97))
+        elif r["v_out"] is not None:
+            points.append((spec["stokes"], r["v_out"] / spec["impact"] / 0.97))
+    return points
+
+
+def plot_restitution(axes, results, label="fddem, d/h = 8"):
+    """e_eff/e_dry against St: `results` (restitution() dicts) over Legendre et al.'s fit and
+    Gondret et al.'s two trajectories measured the same way."""
+    st = np.logspace(0, 3.2, 200)
+    axes.plot(st, np.exp(-LEGENDRE_BETA / st), "k-", label="Legendre et al. (2006): exp(−35/St)")
+    ref = gondret_restitution_points()
+    axes.plot([p[0] for p in ref], [p[1] for p in ref], "ks", mfc="none",
+              label="Gondret et al. (2002), trajectories measured as the runs")
+    axes.plot([r["stokes"] for r in results], [r["ratio"] for r in results], "ro",
+              label=f"{label} (no rebound plotted as 0)")
+    axes.set_xscale("log")
+    axes.set_xlabel("St = ρp v_in d / (9 μ)")
+    axes.set_ylabel("e_eff / e_dry")
+    axes.set_ylim(-0.05, 1.12)
+    axes.grid(True, which="both", alpha=0.3)

@@ -7,6 +7,7 @@ the ParaView script against a stand-in for paraview.simple. Run by CTest (label 
 
 import contextlib
 import io as text_io
+import math
 import os
 import subprocess
 import sys
@@ -762,12 +763,13 @@ class TwoSpheres(unittest.TestCase):
             self.assertGreater(pixel_variance(png), MIN_PIXEL_VARIANCE)
 
 
-def write_bounce_run(directory, t, gap, w, diameter, floor):
+def write_bounce_run(directory, t, gap, w, diameter, floor, material=""):
     """A run directory holding one sphere whose lowest point is `gap` (in d) above the floor
-    z = `floor`: case.toml (domain origin and the body's diameter) and particles.csv."""
+    z = `floor`: case.toml (domain origin and the body's diameter, and `material`: more TOML
+    lines for the body and the case) and particles.csv."""
     with open(os.path.join(directory, "case.toml"), "w") as f:
         f.write(f"[domain]\norigin = [0.0, 0.0, {floor}]\nsize = [0.01, 0.01, 0.05]\n\n"
-                f"[[bodies]]\nshape = 'sphere'\ndiameter = {diameter}\n")
+                f"[[bodies]]\nshape = 'sphere'\ndiameter = {diameter}\n{material}")
     z = floor + 0.5 * diameter + np.asarray(gap) * diameter
     with open(os.path.join(directory, "particles.csv"), "w") as f:
         f.write("time,id,x,y,z,u,v,w\n")
@@ -841,6 +843,31 @@ class Rebound(unittest.TestCase):
         self.assertAlmostEqual(s["touch"], 1.0)
         self.assertAlmostEqual(s["separation"], 0.5)
         self.assertAlmostEqual(s["e_contact"], 0.5)
+
+    def test_restitution_and_stokes_number_of_a_bounce(self):
+        # e_eff/e_dry = E/e_dry and St = ρp v_in d/(9μ), v_in from the trajectory's own fit.
+        t, gap, w, _, _ = self.ballistic()
+        material = ("density = 7800.0\n[fluid]\nviscosity = 0.02\ndensity = 900.0\n"
+                    "[contact]\nrestitution = 0.9\n")
+        with tempfile.TemporaryDirectory() as directory:
+            write_bounce_run(directory, t, gap, w, self.D, floor=0.0, material=material)
+            r = rebound.restitution(directory)
+            # A sphere the film stops before the wall: no rebound, St at its closest approach.
+            stopped = np.maximum(gap[t < 0.0123], 0.0) + 0.05
+            write_bounce_run(directory, t[t < 0.0123], stopped, w[t < 0.0123], self.D, floor=0.0,
+                             material=material)
+            s = rebound.restitution(directory)
+        self.assertTrue(r["rebounds"])
+        self.assertAlmostEqual(r["ratio"], self.E / 0.9, delta=1e-4)
+        self.assertAlmostEqual(r["stokes"], 7800.0 * self.V_IN * self.D / (9 * 0.02), delta=1e-3)
+        self.assertFalse(s["rebounds"])
+        self.assertEqual(s["ratio"], 0.0)
+        self.assertAlmostEqual(s["stokes"], 7800.0 * self.V_IN * self.D / (9 * 0.02), delta=0.5)
+        # Legendre et al.'s fit and Gondret's own points: above the fit, by 0.09 and 0.18.
+        self.assertAlmostEqual(rebound.legendre_fit(35.0), math.exp(-1.0), delta=1e-15)
+        points = dict(rebound.gondret_restitution_points())
+        self.assertAlmostEqual(points[152.0] - rebound.legendre_fit(152.0), 0.092, delta=0.005)
+        self.assertAlmostEqual(points[27.0] - rebound.legendre_fit(27.0), 0.178, delta=0.005)
 
     def test_gondret_data_gives_the_published_peaks_and_itself_matches(self):
         t, gap = rebound.load_reference("st152")

@@ -404,6 +404,51 @@ TEST_F(Restart, ReleasedBodyIsTheTwoStageRunWithTheCourantLimit)
     expect_release_is_the_two_stage_run(root_, log_, "dt = 0.013\nmax_courant = 0.4\n");
 }
 
+TEST_F(Restart, AHeldBodyIsNotAtRestBeforeItsRelease)
+{
+    // Held still (prescribed at zero velocity) until t = 0.05 s: the rest criterion must not end
+    // the run while it waits, though every free body "is below the rest speed".
+    const fs::path held = root_ / "held.toml";
+    std::ofstream(held) << R"([domain]
+size = [1.0, 2.0]
+cells = [16, 32]
+[fluid]
+density = 1.0
+viscosity = 0.01
+gravity = [0.0, -9.81]
+[[bodies]]
+diameter = 0.25
+density = 4.0
+position = [0.5, 1.5]
+motion = "prescribed"
+release_time = 0.05
+n_rings = 2
+[time]
+dt = 0.01
+end = 0.15
+rest_speed = 0.01
+rest_duration = 0.02
+[simple]
+tolerance = 1e-3
+fft_planning = "estimate"
+[output]
+field_interval = 0.0
+particle_interval = 0.0
+)";
+    const fs::path directory = root_ / "held";
+    const Result r = run("run " + held.string() + " -o " + directory.string() + " -q");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const std::vector<std::string> rows = lines_of(file_contents(directory / "particles.csv"));
+    ASSERT_GT(rows.size(), 2U);
+    std::istringstream last(rows.back());
+    std::vector<double> cells;
+    for (std::string cell; std::getline(last, cell, ',');) {
+        cells.push_back(std::stod(cell));
+    }
+    EXPECT_NEAR(cells.at(0), 0.15, 1e-9) << rows.back(); // ran to its end
+    EXPECT_LT(cells.at(5), -0.2) << rows.back();         // and fell once let go
+}
+
 TEST_F(Restart, KilledRunRestartsToTheSameResults)
 {
     const fs::path ref = reference();

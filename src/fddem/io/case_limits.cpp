@@ -74,12 +74,40 @@ void check_steps(const CaseDocument& doc, const TimeConfig& time)
     }
 }
 
+/// A fixed time.dt releases a body (bodies.release_time) at the start of a step: the release
+/// must be a whole number of steps, as time.end must.
+void check_releases(const CaseDocument& doc, const CaseConfig& c)
+{
+    const TimeConfig& time = c.time;
+    if (time.max_courant || time.is_steady) {
+        return; // the controlled step lands on the release
+    }
+    for (const BodyConfig& b : c.bodies) {
+        if (!b.release_time) {
+            continue;
+        }
+        const double steps = *b.release_time / time.dt;
+        const double whole = std::round(steps);
+        if (std::abs(steps - whole) > whole_steps_tolerance * std::max(1.0, steps)) {
+            const toml::table& entry = doc.entry("bodies", b.entry);
+            doc.fail("bodies.release_time", entry.get("release_time"),
+                     fmt::format("{:g} s is not a whole number of time steps of {:g} s ({:.6g} "
+                                 "steps): a fixed time.dt releases a body at the start of a "
+                                 "step; use {:g} or {:g} s, or time.max_courant (whose step "
+                                 "lands on the release)",
+                                 *b.release_time, time.dt, steps, std::floor(steps) * time.dt,
+                                 std::ceil(steps) * time.dt));
+        }
+    }
+}
+
 } // namespace
 
 void check_limits(const CaseDocument& doc, const CaseConfig& c)
 {
     check_box(doc, c.domain);
     check_steps(doc, c.time);
+    check_releases(doc, c);
 }
 
 } // namespace fddem

@@ -106,9 +106,9 @@ void Simulation<Dim>::choose_time_step()
 template <int Dim>
 void Simulation<Dim>::release_bodies()
 {
-    // A landed clock is within round-off of the release; a thousandth of time.dt absorbs it
-    // without releasing a step early.
-    const double tolerance = 1e-3 * config_.time.dt;
+    // A clock that landed on the release (or summed a whole number of fixed steps to it, which
+    // the case reader requires) is within round-off of it.
+    const double tolerance = 1e-9 * std::max(std::abs(clock_.time), clock_.dt);
     for (Particle<Dim>& body : bodies_) {
         if (body.release_due(clock_.time, tolerance)) {
             body.motion = Motion::free; // from the velocity it was prescribed
@@ -322,11 +322,14 @@ void Simulation<Dim>::track_rest()
     if (!config_.time.rest_speed) {
         return;
     }
+    // A body still to be released is not at rest, whatever its prescribed speed.
     const bool is_at_rest =
         std::all_of(bodies_.begin(), bodies_.end(), [&](const Particle<Dim>& body) {
-            return !body.is_free() ||
-                   body.velocity.norm() + magnitude<Dim>(body.omega) * body.radius() <
-                       *config_.time.rest_speed;
+            if (!body.is_free()) {
+                return !body.moves_freely(); // fixed, or prescribed for good
+            }
+            return body.velocity.norm() + magnitude<Dim>(body.omega) * body.radius() <
+                   *config_.time.rest_speed;
         });
     if (!is_at_rest) {
         rest_since_ = -1.0;

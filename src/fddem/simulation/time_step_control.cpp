@@ -84,12 +84,14 @@ double next_time_step(const TimeStepSettings& settings, double dt, double time,
         next = std::min(next, *settings.max_courant / speed_per_cell);
     }
     if (!settings.is_steady) {
-        // The end test allows half a step; a release is met exactly (to round-off).
-        if (landing) {
-            next = land(next, *landing - time);
+        // Land on the nearer of the two ahead (the end test allows half a step; a release is
+        // met exactly, to round-off).
+        std::optional<double> target = settings.end_time;
+        if (landing && *landing > time && (!target || *landing < *target)) {
+            target = landing;
         }
-        if (settings.end_time) {
-            next = land(next, *settings.end_time - time);
+        if (target) {
+            next = land(next, *target - time);
         }
     }
     return next;

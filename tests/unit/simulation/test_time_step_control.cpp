@@ -89,8 +89,11 @@ TEST(TimeStepControl, StepLandsOnABodysReleaseAsOnTheEndTime)
     EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.85, 1.0, {}, 1.0), 0.075); // two equal steps
     EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 0.5, 1.0, {}, 1.0), 0.1);    // far ahead
     EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 1.2, 1.0, {}, 1.0), 0.1);    // passed: none
-    // The end time still wins where it comes first.
+    // The end time still wins where it comes first; a release just before the end is met
+    // exactly, and one past the end does not split the last step.
     EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 1.95, 1.0, {}, 3.0), 2.0 - 1.95);
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 1.9, 1.0, {}, 1.9995), 1.9995 - 1.9);
+    EXPECT_DOUBLE_EQ(next_time_step(s, 0.1, 1.9, 1.0, {}, 2.05), 2.0 - 1.9);
     // A fixed-step march (no Courant limit) lands on it too when the controller runs.
     const TimeStepSettings fixed{0.1, std::nullopt, false, std::nullopt, 1.2};
     EXPECT_DOUBLE_EQ(next_time_step(fixed, 0.1, 0.97, 0.0, {}, 1.0), 1.0 - 0.97);
