@@ -375,7 +375,8 @@ def restitution_check(stokes, viscosity, end):
     def evaluate(run_dir):
         r = rebound.restitution(run_dir)
         fit = rebound.legendre_fit(r["stokes"])
-        return [(f"e_eff/e_dry at St {r['stokes']:.1f} (impact speed measured)"
+        where = "impact speed measured" if r["t_contact"] is not None else "never touches: speed at gap 1 d"
+        return [(f"e_eff/e_dry at St {r['stokes']:.1f} ({where})"
                  + ("" if r["rebounds"] else ": no rebound"), r["ratio"], fit, REBOUND_BAND,
                  "Legendre et al. (2006) exp(−35/St) (legendre2006_fit.md); ± 0.1, a judgement "
                  "(REBOUND_BAND: no published scatter was found)")]

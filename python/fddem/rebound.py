@@ -275,8 +275,9 @@ def restitution(run_dir):
     """St, v_in, v_out, e_eff, e_eff/e_dry ("ratio") and the contact's speed ratio of one rebound
     run, as a dict. St = ρp v_in d/(9μ) at the impact speed v_in measured from the trajectory
     (as the experiments define it); a sphere that never touches (the film stops it) has St at
-    its speed at the closest approach and the ratio 0 (no rebound); one that touches and does not
-    leave the wall again, the ratio 0 too."""
+    its speed where the gap is first 1 d (the far end of FIT_WINDOW, before the film slows it)
+    and the ratio 0 (no rebound); one that touches and does not leave the wall again, the ratio
+    0 too."""
     case = io.read_case(run_dir)
     body = case["bodies"][0]
     density = float(body["density"])
@@ -286,7 +287,8 @@ def restitution(run_dir):
     try:
         result = measure(t, gap, diameter=diameter)
     except ValueError:  # never at the wall: no contact, no rebound
-        k = int(np.argmin(gap))
+        near = np.flatnonzero(gap <= FIT_WINDOW[1])
+        k = int(near[0]) if near.size else int(np.argmin(gap))
         result = {"t_contact": None, "peaks": [], "v_in": None, "v_out": None, "e_eff": None,
                   "touch": float(-w[k]), "separation": None, "e_contact": None}
     else:
