@@ -17,6 +17,7 @@ import math
 import os
 import subprocess
 import sys
+import textwrap
 import time
 
 import numpy as np
@@ -627,7 +628,7 @@ def main():
                                    squeeze=False)
         panels = list(panels[:, 0])
         check.plot(run_dir, panels[0] if check.panels == 1 else panels)
-        panels[0].set_title(check.name, fontsize=9)
+        panels[0].set_title(textwrap.fill(check.name, 70), fontsize=9)  # long names: two lines
         for axes in panels:
             axes.grid(alpha=0.3)
             if check.panels == 1:  # a check that draws several panels places its own legends
