@@ -347,40 +347,35 @@ std::vector<double> last_particle_row(const fs::path& run)
     return cells;
 }
 
+/// One disk (d = 0.25, ρs = 4; the three disks' box, fluid and gravity) on `cells`, with
+/// `body_keys` for the rest of its [[bodies]] entry: the head of the release cases below.
+std::string one_disk_case(const std::string& cells, const std::string& body_keys)
+{
+    return "[domain]\nsize = [1.0, 2.0]\ncells = " + cells +
+           "\n[fluid]\ndensity = 1.0\nviscosity = 0.01\ngravity = [0.0, -9.81]\n"
+           "[[bodies]]\ndiameter = 0.25\ndensity = 4.0\n" +
+           body_keys;
+}
+
+/// The same FFT plans in every process, and particles.csv every step without field frames.
+const std::string quiet_output =
+    "fft_planning = \"estimate\"\n[output]\nfield_interval = 0.0\nparticle_interval = 0.0\n";
+
 /// A disk towed down at 1 m/s and let go at t = 0.1 s by bodies.release_time, as one run, and
 /// as the two runs a user would otherwise make: the towed part to t = 0.1 s, then a restart with
 /// the disk made free. `time_keys`: the [time] table's lines besides the end.
 void expect_release_is_the_two_stage_run(const fs::path& root, const fs::path& log,
                                          const std::string& time_keys)
 {
-    const std::string towed = R"([domain]
-size = [1.0, 2.0]
-cells = [32, 64]
-[fluid]
-density = 1.0
-viscosity = 0.01
-gravity = [0.0, -9.81]
-[[bodies]]
-diameter = 0.25
-density = 4.0
-position = [0.5, 1.6]
-velocity = [0.0, -1.0]
-motion = "prescribed"
-n_rings = 3
-RELEASE[time]
-)" + time_keys + R"(end = 0.3
-[simple]
-tolerance = 1e-3
-max_outer_iterations = 20
-fft_planning = "estimate"
-[output]
-field_interval = 0.0
-particle_interval = 0.0
-)";
+    const std::string head = one_disk_case("[32, 64]", "position = [0.5, 1.6]\n"
+                                                       "velocity = [0.0, -1.0]\n"
+                                                       "motion = \"prescribed\"\n"
+                                                       "n_rings = 3\n");
+    const std::string tail = "[time]\n" + time_keys +
+                             "end = 0.3\n[simple]\ntolerance = 1e-3\nmax_outer_iterations = 20\n" +
+                             quiet_output;
     const auto write = [&](const std::string& name, const std::string& release) {
-        std::string text = towed;
-        text.replace(text.find("RELEASE"), 7, release);
-        std::ofstream(root / name) << text;
+        std::ofstream(root / name) << head + release + tail;
         return (root / name).string();
     };
     const fs::path one = root / "released";
@@ -417,32 +412,14 @@ TEST_F(Restart, AHeldBodyIsNotAtRestBeforeItsRelease)
     // Held still (prescribed at zero velocity) until t = 0.05 s: the rest criterion must not end
     // the run while it waits, though every free body "is below the rest speed".
     const fs::path held = root_ / "held.toml";
-    std::ofstream(held) << R"([domain]
-size = [1.0, 2.0]
-cells = [16, 32]
-[fluid]
-density = 1.0
-viscosity = 0.01
-gravity = [0.0, -9.81]
-[[bodies]]
-diameter = 0.25
-density = 4.0
-position = [0.5, 1.5]
-motion = "prescribed"
-release_time = 0.05
-n_rings = 2
-[time]
-dt = 0.01
-end = 0.15
-rest_speed = 0.01
-rest_duration = 0.02
-[simple]
-tolerance = 1e-3
-fft_planning = "estimate"
-[output]
-field_interval = 0.0
-particle_interval = 0.0
-)";
+    std::ofstream(held)
+        << one_disk_case("[16, 32]", "position = [0.5, 1.5]\n"
+                                     "motion = \"prescribed\"\n"
+                                     "release_time = 0.05\n"
+                                     "n_rings = 2\n")
+        << "[time]\ndt = 0.01\nend = 0.15\nrest_speed = 0.01\nrest_duration = 0.02\n"
+           "[simple]\ntolerance = 1e-3\n"
+        << quiet_output;
     const fs::path directory = root_ / "held";
     const Result r = run("run " + held.string() + " -o " + directory.string() + " -q");
     ASSERT_EQ(r.status, 0) << r.output;

@@ -449,9 +449,8 @@ std::vector<KeySpec> case_schema()
                    "A prescribed body moves freely (as motion = \"free\") from this time on, "
                    "from the velocity it was given: a body brought to a speed and then let go, "
                    "in one run (e.g. a sphere's approach to a wall at a measured impact speed). "
-                   "With time.max_courant a step ends on it; with the fixed time.dt the body is "
-                   "released at the first step that starts at or after it. Prescribed bodies "
-                   "only."),
+                   "With time.max_courant a step ends on it; with the fixed time.dt it must be "
+                   "a whole number of steps. Prescribed bodies only."),
                0.0, inf, false, false),
         &BodyConfig::release_time));
     s.push_back(

@@ -189,7 +189,7 @@ template <int Dim>
 StepReport Simulation<Dim>::advance_unguarded()
 {
     StepReport report;
-    release_bodies();
+    release_bodies(); // bodies.release_time (fddem's, not the paper's): prescribed until then
     if (config_.time.max_courant || config_.time.is_steady) {
         choose_time_step();
     }

@@ -158,8 +158,8 @@ std::optional<ContactSetup<Dim>>
 make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
                    const BoundaryConditions<Dim>& bc, const Particles<Dim>& bodies)
 {
-    // Without a free body nothing can collide; the lubrication still acts on (and is reported
-    // for) prescribed bodies near walls and each other when it is on.
+    // Without a body that is free or will be released nothing can collide; the lubrication
+    // still acts on (and is reported for) prescribed bodies near walls and each other when on.
     if (bodies.empty() || (!bodies.has_moving_body() && !config.lubrication.is_enabled)) {
         return std::nullopt;
     }
