@@ -11,6 +11,7 @@
 #include "fddem/bodies/marker_set.hpp"
 #include "fddem/bodies/material.hpp"
 #include "fddem/bodies/orientation.hpp"
+#include "fddem/contact/lubrication_link.hpp"
 #include "fddem/core/vec.hpp"
 
 #include <optional>
@@ -68,6 +69,9 @@ struct ContactState {
     /// The lubrication part of mean_force and mean_torque (outputs show the two apart).
     Vec<Dim> lubrication_force = Vec<Dim>::Zero();
     AngularVec<Dim> lubrication_torque = zero_angular<Dim>(); ///< [N·m]
+    /// The body's gaps within the lubrication range at the step's start, for the implicit
+    /// coupling (lubrication.coupling = "implicit"); empty otherwise.
+    std::vector<LubricationLink<Dim>> lubrication_links;
     bool is_in_contact = false; ///< touched something (or came within the margin) this step
 };
 

@@ -37,20 +37,22 @@ enum class ContactCoupling { paper, additive };
 /// (the paper's eq. (18): the buoyant weight only) or held (the resolved hydrodynamic force and
 /// torque of the step before, held constant over the sub-steps in which the body touches
 /// nothing, as resolved codes hold the fluid force over their collision sub-steps); automatic:
-/// held with the lubrication correction on, none without (held_fluid_force_applies()).
+/// held with the lubrication correction on and coupled through the DEM (lubrication.coupling
+/// "dem"), none otherwise (held_fluid_force_applies()).
 enum class ContactFluidForce { automatic, none, held };
 
 /// Whether the sub-steps hold the resolved fluid force: contact.fluid_force = "held", or "auto"
-/// with lubrication.enabled. With lubrication on, the paper coupling hands a body to the DEM
+/// with `is_lubrication_through_dem` (lubrication.enabled with coupling "dem"). Then the paper
+/// coupling hands a body to the DEM
 /// whenever it is within the lubrication range (about 2 h) of a wall or another body, for as
 /// long as it stays there; without the resolved force a sphere sliding down a side wall 0.8 h
 /// away then falls at its buoyant weight alone, 2.8 times faster than in open fluid after
 /// 0.06 s instead of slower (docs/method.md §5, Coupling).
 [[nodiscard]] constexpr bool held_fluid_force_applies(ContactFluidForce choice,
-                                                      bool is_lubrication_enabled)
+                                                      bool is_lubrication_through_dem)
 {
     return choice == ContactFluidForce::held ||
-           (choice == ContactFluidForce::automatic && is_lubrication_enabled);
+           (choice == ContactFluidForce::automatic && is_lubrication_through_dem);
 }
 
 struct ContactModelEntry {

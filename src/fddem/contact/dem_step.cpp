@@ -12,6 +12,13 @@
 namespace fddem {
 namespace {
 
+/// Whether a body within the lubrication range counts as in contact (lubrication.coupling
+/// "dem"); with "implicit" only the margin does.
+bool counts_range_as_contact(const LubricationSettings& lubrication)
+{
+    return lubrication.is_enabled && lubrication.coupling == LubricationCoupling::dem;
+}
+
 /// The sub-stepped state of a body (ContactState), as the contact geometry needs it.
 template <int Dim>
 BallState<Dim> ball_of(const Particle<Dim>& b)
@@ -44,7 +51,8 @@ public:
                   const LubricationSettings& lubrication, const CellList<Dim>& cells, double dt)
         : force(bodies.size()), torque(bodies.size()), has_contact(bodies.size()),
           touching(bodies.size()), walls_(walls), model_(model), history_(history), dt_(dt),
-          margin_(lubrication.is_enabled ? std::max(margin, lubrication.range) : margin),
+          margin_(counts_range_as_contact(lubrication) ? std::max(margin, lubrication.range)
+                                                       : margin),
           domain_(cells.domain()),
           neighbours_(std::max(margin, lubrication.is_enabled ? lubrication.range : 0.0),
                       largest_radius(bodies), cells),
@@ -144,6 +152,43 @@ public:
             const ContactGeometry<Dim> g = wall_contact(bodies[a], d, side);
             damp(g, bodies[a], nullptr, std::numeric_limits<double>::infinity(), shell_depths_[a],
                  step, dt);
+        }
+    }
+
+    /// lubrication.coupling = "implicit": each body's gaps within the range at the current state
+    /// (the step's start), with their corrections, appended to contact.lubrication_links (both
+    /// sides of a pair; only the free bodies moved by eqs. (13)–(14) read them).
+    void link(std::span<Particle<Dim>> bodies) const
+    {
+        for (const auto& [i, j] : neighbours_.pairs()) {
+            const auto a = static_cast<std::size_t>(i);
+            const auto b = static_cast<std::size_t>(j);
+            const ContactGeometry<Dim> g =
+                ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]), domain_);
+            const LubricationResistance c =
+                lubrication_correction<Dim>(-g.overlap, bodies[a].radius(), bodies[b].radius(),
+                                            lubrication_, shell_depths_[a] + shell_depths_[b]);
+            if (c.normal == 0.0 && c.tangential == 0.0) {
+                continue;
+            }
+            const Vec<Dim> none = Vec<Dim>::Zero();
+            bodies[a].contact.lubrication_links.push_back(
+                {b, g.normal, g.lever_first, g.lever_second, none, c});
+            bodies[b].contact.lubrication_links.push_back(
+                {a, Vec<Dim>(-g.normal), g.lever_second, g.lever_first, none, c});
+        }
+        for (const auto& [body, d, side] : neighbours_.walls()) {
+            const auto a = static_cast<std::size_t>(body);
+            const ContactGeometry<Dim> g = wall_contact(bodies[a], d, side);
+            const LubricationResistance c = lubrication_correction<Dim>(
+                -g.overlap, bodies[a].radius(), std::numeric_limits<double>::infinity(),
+                lubrication_, shell_depths_[a]);
+            if (c.normal == 0.0 && c.tangential == 0.0) {
+                continue;
+            }
+            bodies[a].contact.lubrication_links.push_back(
+                {LubricationLink<Dim>::wall, g.normal, g.lever_first, Vec<Dim>::Zero(),
+                 walls_.velocity[static_cast<std::size_t>(d)][static_cast<std::size_t>(side)], c});
         }
     }
 
@@ -312,6 +357,7 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
         c.mean_torque = zero_angular<Dim>();
         c.lubrication_force = Vec<Dim>::Zero();
         c.lubrication_torque = zero_angular<Dim>();
+        c.lubrication_links.clear();
     }
     const double step = dt / settings.substeps;
     const double half = 0.5 * step;
@@ -319,6 +365,10 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
     ContactForces<Dim, Model> contacts(bodies, walls, model, history, settings.margin,
                                        settings.lubrication, cells, dt);
     contacts.evaluate(bodies, cells, step, false, outcome);
+    if (settings.lubrication.is_enabled &&
+        settings.lubrication.coupling == LubricationCoupling::implicit) {
+        contacts.link(bodies);
+    }
     const auto kick = [&](std::size_t b) {
         const Particle<Dim>& body = bodies[b];
         ContactState<Dim>& c = bodies[b].contact;

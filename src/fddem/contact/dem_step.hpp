@@ -57,9 +57,11 @@ struct DemSettings {
     double margin = 0.0;
     /// Lubrication correction (contact/lubrication.hpp), off by default. When on, pairs and
     /// walls closer than its range get, after each sub-step's second half-kick, a backward-Euler
-    /// damping impulse of their relative normal and tangential surface velocities, and count as
-    /// in contact (as within the margin: with the paper's coupling the DEM moves them, so the
-    /// damping acts on the velocity the body keeps); the cell list must then reach
+    /// damping impulse of their relative normal and tangential surface velocities. With
+    /// coupling "dem" they count as in contact (as within the margin: with the paper's coupling
+    /// the DEM moves them, so the damping acts on the velocity the body keeps); with "implicit"
+    /// they do not, and each body's gaps at the step's start are kept in
+    /// contact.lubrication_links for eqs. (13)–(14). The cell list must reach
     /// 2 r_max + max(margin, range).
     LubricationSettings lubrication{};
 };

@@ -65,6 +65,18 @@ enum class LubricationResolved {
     shells, ///< the resistance of the gap between the outermost marker shells, h + s
 };
 
+/// How the correction reaches a body that is near another or a wall but not in contact
+/// (lubrication.coupling).
+enum class LubricationCoupling {
+    /// the body counts as in contact within the range: with the paper's coupling the DEM moves
+    /// it, and the correction acts implicitly in the sub-steps (fddem's first coupling)
+    dem,
+    /// the body stays on eqs. (13)–(14), with the correction's damping on their left-hand sides
+    /// (the partner's velocity lagged): the fluid's added mass and the film act together
+    /// (coupling/lubrication_coupling.hpp)
+    implicit,
+};
+
 /// [lubrication] of a case, in SI units as the DEM uses it.
 struct LubricationSettings {
     bool is_enabled = false; ///< off: the sub-steps are the dry DEM's, bit for bit
@@ -73,6 +85,7 @@ struct LubricationSettings {
     double roughness = 1e-3; ///< h_σ as a fraction of the smaller radius
     LubricationInContact in_contact = LubricationInContact::off; ///< while overlapping
     LubricationResolved resolved = LubricationResolved::range;   ///< what the grid resolves
+    LubricationCoupling coupling = LubricationCoupling::dem;     ///< bodies not in contact
 };
 
 /// Resistance coefficients of one gap [N·s/m] (2D: per unit length).

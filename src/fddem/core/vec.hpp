@@ -14,6 +14,10 @@ namespace fddem {
 template <int Dim>
 using Vec = Eigen::Matrix<double, Dim, 1>;
 
+/// A Dim × Dim matrix (a resistance tensor).
+template <int Dim>
+using Matrix = Eigen::Matrix<double, Dim, Dim>;
+
 /// The values of a list of small vectors (λ or I(u) on the markers) as one span of doubles, for
 /// the mixing of the outer iterate and the sums over MPI ranks: a Vec<Dim> is Dim contiguous
 /// doubles.

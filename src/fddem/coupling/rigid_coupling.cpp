@@ -6,10 +6,10 @@
 namespace fddem {
 
 template <int Dim>
-RigidVelocity<Dim>
-rigid_velocity(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offsets,
-               std::span<const double> volumes, std::span<const Vec<Dim>> fluid_at_markers,
-               std::span<const Vec<Dim>> lambda_star)
+RigidBalance<Dim> rigid_balance(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offsets,
+                                std::span<const double> volumes,
+                                std::span<const Vec<Dim>> fluid_at_markers,
+                                std::span<const Vec<Dim>> lambda_star)
 {
     Vec<Dim> momentum = Vec<Dim>::Zero();
     AngularVec<Dim> angular{};
@@ -23,16 +23,24 @@ rigid_velocity(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offset
     }
     const double dt = in.dt;
     const double buoyant_mass = (in.body_density - in.fluid_density) * in.volume;
-    const Vec<Dim> velocity = (buoyant_mass * (in.velocity_n / dt + in.gravity) +
-                               in.fluid_density * momentum + in.external_force) /
-                              (in.body_density * in.volume / dt);
     const Inertia<Dim> excess = in.body_inertia - in.fluid_density * in.fluid_second_moment;
-    const AngularVec<Dim> moment = apply<Dim>(excess, in.omega_n) / dt -
-                                   gyroscopic<Dim>(excess, in.omega_n) +
-                                   in.fluid_density * angular + in.external_torque;
-    const Inertia<Dim> body_inertia_rate = in.body_inertia / dt;
-    const AngularVec<Dim> omega = solve<Dim>(body_inertia_rate, moment);
-    return {velocity, omega};
+    return {buoyant_mass * (in.velocity_n / dt + in.gravity) + in.fluid_density * momentum +
+                in.external_force,
+            in.body_density * in.volume / dt,
+            apply<Dim>(excess, in.omega_n) / dt - gyroscopic<Dim>(excess, in.omega_n) +
+                in.fluid_density * angular + in.external_torque,
+            in.body_inertia / dt};
+}
+
+template <int Dim>
+RigidVelocity<Dim>
+rigid_velocity(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offsets,
+               std::span<const double> volumes, std::span<const Vec<Dim>> fluid_at_markers,
+               std::span<const Vec<Dim>> lambda_star)
+{
+    const RigidBalance<Dim> b =
+        rigid_balance<Dim>(in, offsets, volumes, fluid_at_markers, lambda_star);
+    return {b.impulse_rate / b.mass_rate, solve<Dim>(b.inertia_rate, b.moment_rate)};
 }
 
 template <int Dim>
@@ -66,6 +74,12 @@ double forcing_change(std::span<const Vec<Dim>> offsets, std::span<const double>
     return dt * (force.norm() + 2.0 * magnitude<Dim>(moment) / radius) / volume;
 }
 
+template RigidBalance<2> rigid_balance<2>(const RigidUpdateInput<2>&, std::span<const Vec<2>>,
+                                          std::span<const double>, std::span<const Vec<2>>,
+                                          std::span<const Vec<2>>);
+template RigidBalance<3> rigid_balance<3>(const RigidUpdateInput<3>&, std::span<const Vec<3>>,
+                                          std::span<const double>, std::span<const Vec<3>>,
+                                          std::span<const Vec<3>>);
 template RigidVelocity<2> rigid_velocity<2>(const RigidUpdateInput<2>&, std::span<const Vec<2>>,
                                             std::span<const double>, std::span<const Vec<2>>,
                                             std::span<const Vec<2>>);

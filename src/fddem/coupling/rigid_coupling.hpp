@@ -47,6 +47,24 @@ struct RigidUpdateInput {
     AngularVec<Dim> external_torque = zero_angular<Dim>(); ///< likewise for eq. (14) [N·m]
 };
 
+/// The right sides of eqs. (13)–(14), as rates: eq. (13) is mass_rate U^{n+1} = impulse_rate,
+/// eq. (14) inertia_rate·ω^{n+1} = moment_rate.
+template <int Dim>
+struct RigidBalance {
+    Vec<Dim> impulse_rate;       ///< [N]
+    double mass_rate;            ///< ρs V/Δt [kg/s]
+    AngularVec<Dim> moment_rate; ///< [N·m]
+    Inertia<Dim> inertia_rate;   ///< J_s/Δt [kg·m²/s]
+};
+
+/// Both sides of eqs. (13)–(14) of a free body, before they are solved: a body with other
+/// implicit terms (the lubrication links, coupling/lubrication_coupling.hpp) adds them.
+template <int Dim>
+[[nodiscard]] RigidBalance<Dim>
+rigid_balance(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offsets,
+              std::span<const double> volumes, std::span<const Vec<Dim>> fluid_at_markers,
+              std::span<const Vec<Dim>> lambda_star);
+
 /// eqs. (13)–(14): U^{n+1}, ω^{n+1} of a free body.
 template <int Dim>
 [[nodiscard]] RigidVelocity<Dim>

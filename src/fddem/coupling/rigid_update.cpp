@@ -2,6 +2,7 @@
 #include "fddem/coupling/rigid_update.hpp"
 
 #include "fddem/core/time_scheme.hpp"
+#include "fddem/coupling/lubrication_coupling.hpp"
 #include "fddem/coupling/marker_routes.hpp"
 #include "fddem/coupling/rigid_coupling.hpp"
 #include "fddem/coupling/transfer.hpp"
@@ -12,6 +13,25 @@
 
 namespace fddem {
 namespace {
+
+/// Eqs. (13)–(14)'s level-n motion and parameters of a free body.
+template <int Dim>
+RigidUpdateInput<Dim> input_of(const Particle<Dim>& body, const RigidUpdateSettings<Dim>& s)
+{
+    // Ũ^n, ω̃^n: U^n, ω^n themselves with Euler (w = 0).
+    const TimeLevels levels{s.dt, s.history_weight};
+    return {levels.history(body.velocity_n, body.velocity_nm1),
+            levels.history(body.omega_n, body.omega_nm1),
+            body.density,
+            body.volume(),
+            body.inertia_tensor(),
+            s.fluid_density,
+            body.coupling.fluid_second_moment,
+            s.gravity,
+            s.dt,
+            body.contact.mean_force,
+            body.contact.mean_torque};
+}
 
 /// U^{n+1}, ω^{n+1} of one body: eqs. (13)–(14) for a free body, the DEM's end state for a free
 /// body in contact under the paper's coupling, the given motion for a fixed or prescribed one.
@@ -27,20 +47,7 @@ RigidVelocity<Dim> new_motion(const Particle<Dim>& body, const RigidUpdateSettin
         // body moves as the sub-steps say; the fluid is made to follow.
         return {body.contact.velocity, body.contact.omega};
     }
-    // Ũ^n, ω̃^n: U^n, ω^n themselves with Euler (w = 0).
-    const TimeLevels levels{s.dt, s.history_weight};
-    const RigidUpdateInput<Dim> in{levels.history(body.velocity_n, body.velocity_nm1),
-                                   levels.history(body.omega_n, body.omega_nm1),
-                                   body.density,
-                                   body.volume(),
-                                   body.inertia_tensor(),
-                                   s.fluid_density,
-                                   c.fluid_second_moment,
-                                   s.gravity,
-                                   s.dt,
-                                   body.contact.mean_force,
-                                   body.contact.mean_torque};
-    return rigid_velocity<Dim>(in, c.offsets, c.markers.volumes, c.fluid,
+    return rigid_velocity<Dim>(input_of(body, s), c.offsets, c.markers.volumes, c.fluid,
                                c.lambda_star); // eqs. (13)–(14)
 }
 
@@ -93,26 +100,33 @@ bool reaches_wall(const MacGrid<Dim>& grid, const Vec<Dim>& x)
     return false;
 }
 
-/// Eqs. (13)–(15) of one body from its markers' I(u) (c.fluid): the markers off at walls, the
-/// new motion and λ, and coupling.forcing_change. Arithmetic on the body's own record only, the
-/// same on every rank. Returns the rigid-motion defect; `motion` receives U^{n+1}, ω^{n+1}.
+/// The markers of one body whose kernel support reaches a wall, with coupling.markers_off_at_walls
+/// (Kempe & Fröhlich 2012b, as Biegert et al. 2017 report): no force; their fluid moves with the
+/// body in eqs. (13)–(14). Decided from the position alone, so alike on every rank of a split
+/// grid. Sets their I(u) and λ*; returns the flags (empty without the option).
 template <int Dim, class Kernel>
-double correct_forcing(Particle<Dim>& body, const MacGrid<Dim>& grid,
-                       const RigidUpdateSettings<Dim>& s, RigidVelocity<Dim>& motion)
+std::vector<char> silence_wall_markers(Particle<Dim>& body, const MacGrid<Dim>& grid,
+                                       const RigidUpdateSettings<Dim>& s)
 {
     MarkerCoupling<Dim>& c = body.coupling;
     std::vector<char> is_off(s.is_wall_marker_off ? c.markers.size() : 0, 0);
     for (std::size_t l = 0; l < is_off.size(); ++l) {
         if (reaches_wall<Dim, Kernel>(grid, c.positions[l])) {
-            // coupling.markers_off_at_walls (Kempe & Fröhlich 2012b, as Biegert et al. 2017
-            // report): no force; its fluid moves with the body in eqs. (13)–(14). Decided from
-            // the position alone, so alike on every rank of a split grid.
             is_off[l] = 1;
             c.fluid[l] = body.velocity + cross(body.omega, c.offsets[l]);
             c.lambda_star[l] = Vec<Dim>::Zero();
         }
     }
-    motion = new_motion(body, s);
+    return is_off;
+}
+
+/// Eq. (15) of one body at its new `motion`, the silenced markers' λ zeroed, and
+/// coupling.forcing_change. Returns the rigid-motion defect.
+template <int Dim>
+double new_forcing(Particle<Dim>& body, const RigidVelocity<Dim>& motion,
+                   const std::vector<char>& is_off, const RigidUpdateSettings<Dim>& s)
+{
+    MarkerCoupling<Dim>& c = body.coupling;
     const double defect = update_marker_force<Dim>(motion, c.offsets, c.fluid, c.lambda_star, s.dt,
                                                    c.lambda); // eq. (15)
     for (std::size_t l = 0; l < is_off.size(); ++l) {
@@ -122,6 +136,56 @@ double correct_forcing(Particle<Dim>& body, const MacGrid<Dim>& grid,
     }
     c.forcing_change = forcing_change<Dim>(c.offsets, c.markers.volumes, c.lambda, c.lambda_star,
                                            s.dt, body.volume(), body.radius());
+    return defect;
+}
+
+/// Eqs. (13)–(15) of one body from its markers' I(u) (c.fluid): the markers off at walls, the
+/// new motion and λ, and coupling.forcing_change. Arithmetic on the body's own record only, the
+/// same on every rank. Returns the rigid-motion defect; `motion` receives U^{n+1}, ω^{n+1}.
+template <int Dim, class Kernel>
+double correct_forcing(Particle<Dim>& body, const MacGrid<Dim>& grid,
+                       const RigidUpdateSettings<Dim>& s, RigidVelocity<Dim>& motion)
+{
+    const std::vector<char> is_off = silence_wall_markers<Dim, Kernel>(body, grid, s);
+    motion = new_motion<Dim>(body, s);
+    return new_forcing<Dim>(body, motion, is_off, s);
+}
+
+/// Eqs. (13)–(15) of the bodies `members` that lubrication links join (lubrication.coupling =
+/// "implicit"; coupling/lubrication_coupling.hpp), from their markers' I(u): eq. (13) of all of
+/// them solved together with the links' damping, then each one's eq. (14) with its links'
+/// turning resistance at the new velocities, then eq. (15). Each member's velocity is set to
+/// its new one (`motions`, in the order of `members`). Returns the largest defect.
+template <int Dim, class Kernel>
+double correct_linked_forcing(std::span<Particle<Dim>> bodies, std::span<const std::size_t> members,
+                              const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
+                              std::span<RigidVelocity<Dim>> motions)
+{
+    std::vector<std::vector<char>> is_off;
+    std::vector<RigidBalance<Dim>> balances;
+    for (const std::size_t b : members) {
+        Particle<Dim>& body = bodies[b];
+        is_off.push_back(silence_wall_markers<Dim, Kernel>(body, grid, s));
+        const MarkerCoupling<Dim>& c = body.coupling;
+        balances.push_back(rigid_balance<Dim>(input_of(body, s), c.offsets, c.markers.volumes,
+                                              c.fluid, c.lambda_star));
+    }
+    const std::vector<Vec<Dim>> velocities =
+        coupled_velocities<Dim>(bodies, members, balances); // eq. (13) with the film
+    for (std::size_t m = 0; m < members.size(); ++m) {
+        bodies[members[m]].velocity = velocities[m];
+    }
+    double defect = 0.0;
+    for (std::size_t m = 0; m < members.size(); ++m) {
+        Particle<Dim>& body = bodies[members[m]];
+        const LinkedDamping<Dim> film =
+            linked_damping<Dim>(body.contact.lubrication_links, velocities[m], body.omega, bodies);
+        const AngularVec<Dim> omega =
+            solve<Dim>(Inertia<Dim>(balances[m].inertia_rate + film.moment_rate),
+                       AngularVec<Dim>(balances[m].moment_rate + film.moment_target)); // eq. (14)
+        motions[m] = {velocities[m], omega};
+        defect = std::max(defect, new_forcing<Dim>(body, motions[m], is_off[m], s));
+    }
     return defect;
 }
 
@@ -207,6 +271,37 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
     return defect;
 }
 
+/// The groups the lubrication links join (lubrication.coupling = "implicit"), else none.
+template <int Dim>
+LinkedGroups groups_of(std::span<const Particle<Dim>> bodies, const RigidUpdateSettings<Dim>& s)
+{
+    return s.is_lubrication_implicit ? linked_groups<Dim>(bodies, s.is_paper_contact)
+                                     : LinkedGroups(bodies.size());
+}
+
+/// The sequential sweep's step for a group of bodies that lubrication links join: all of them
+/// read the fluid as the bodies before the group left it, their eqs. (13)–(15) are solved
+/// together (correct_linked_forcing), then each one's correction is spread as update_one does.
+template <int Dim, class Kernel>
+double update_group(std::span<Particle<Dim>> bodies, std::span<const std::size_t> members,
+                    const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
+{
+    for (const std::size_t b : members) {
+        interpolate_at_markers<Dim, Kernel>(grid, u, bodies[b].coupling); // I(u)
+    }
+    std::vector<RigidVelocity<Dim>> motions(members.size());
+    const double defect = correct_linked_forcing<Dim, Kernel>(bodies, members, grid, s, motions);
+    for (std::size_t m = 0; m < members.size(); ++m) {
+        Particle<Dim>& body = bodies[members[m]];
+        const Box<Dim> window = support_window<Dim, Kernel>(grid, body.coupling.positions);
+        begin_spreading(grid, s, u, &window);
+        spread_correction<Dim, Kernel>(body, grid, s, u); // eq. (16)
+        end_spreading(grid, s, u, &window);
+        finish_update(body, motions[m]);
+    }
+    return defect;
+}
+
 /// coupling.body_sweep = "simultaneous": every body reads the same u, and the corrections of all
 /// of them are added together (a Jacobi sweep over the bodies; eq. (16) with D over every
 /// marker at once, as the paper writes it). On a split grid, one message between each pair of
@@ -224,10 +319,23 @@ double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& g
     double defect = 0.0;
     std::vector<RigidVelocity<Dim>> motions(bodies.size());
     if (grid.communicator().size() == 1) {
+        const LinkedGroups groups = groups_of<Dim>(bodies, s);
         for (std::size_t b = 0; b < bodies.size(); ++b) {
-            defect = std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], grid, s, motions[b]));
+            const std::vector<std::size_t>* group = groups.group_starting_at(b);
+            if (group != nullptr) {
+                std::vector<RigidVelocity<Dim>> linked(group->size());
+                defect = std::max(
+                    defect, correct_linked_forcing<Dim, Kernel>(bodies, *group, grid, s, linked));
+                for (std::size_t m = 0; m < group->size(); ++m) {
+                    motions[(*group)[m]] = linked[m];
+                }
+            } else if (!groups.is_linked(b)) {
+                defect =
+                    std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], grid, s, motions[b]));
+            }
         }
     } else {
+        // (lubrication.coupling = "implicit" is refused here: OuterIterations' constructor)
         // Split grid (marker_routes.hpp): the owner of each body gathers its markers' I(u),
         // evaluates eqs. (13)–(15), and hands λ back to the ranks that spread them; the motion
         // is then every rank's.
@@ -268,8 +376,18 @@ double update_rigid_bodies(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& 
                 defect = update_all_at_once<Dim, decltype(k)>(bodies, grid, settings, u);
                 return;
             }
-            for (Particle<Dim>& body : bodies) {
-                defect = std::max(defect, update_one<Dim, decltype(k)>(body, grid, settings, u));
+            // With the implicit lubrication, the bodies its links join are updated together,
+            // where the first of them comes in the sweep.
+            const LinkedGroups groups = groups_of<Dim>(bodies, settings);
+            for (std::size_t b = 0; b < bodies.size(); ++b) {
+                const std::vector<std::size_t>* group = groups.group_starting_at(b);
+                if (group != nullptr) {
+                    defect = std::max(
+                        defect, update_group<Dim, decltype(k)>(bodies, *group, grid, settings, u));
+                } else if (!groups.is_linked(b)) {
+                    defect = std::max(defect,
+                                      update_one<Dim, decltype(k)>(bodies[b], grid, settings, u));
+                }
             }
         },
         kernel);

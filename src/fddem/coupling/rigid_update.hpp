@@ -49,6 +49,9 @@ struct RigidUpdateSettings {
     /// is folded back through (fold_wall_ghosts), so that D is the adjoint of I beside a wall;
     /// null: what is spread into a wall's ghosts is dropped
     const BoundaryConditions<Dim>* adjoint_walls = nullptr;
+    /// lubrication.coupling = "implicit": a body's lubrication links (ContactState) enter its
+    /// eqs. (13)–(14) as an implicit damping (coupling/lubrication_coupling.hpp)
+    bool is_lubrication_implicit = false;
 };
 
 /// Whether eqs. (13)–(14) give the body's motion in an outer iteration: a free body, unless the

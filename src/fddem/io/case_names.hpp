@@ -117,6 +117,12 @@ constexpr auto case_names(LubricationResolved /*tag*/)
     using enum LubricationResolved;
     return std::to_array<EnumName<LubricationResolved>>({{range, "range"}, {shells, "shells"}});
 }
+constexpr auto case_names(LubricationCoupling /*tag*/)
+{
+    using enum LubricationCoupling;
+    return std::to_array<EnumName<LubricationCoupling>>({{dem, "dem"}, {implicit, "implicit"}});
+}
+
 /// The contact models by the names of their registry (contact/contact_models.cpp).
 [[nodiscard]] std::vector<EnumName<ContactModelKind>> case_names(ContactModelKind /*tag*/);
 

@@ -548,9 +548,9 @@ std::vector<KeySpec> case_schema()
                           "feels no resolved fluid force), held (the resolved hydrodynamic "
                           "force and torque of the step before, held constant over the sub-steps "
                           "in which it touches nothing) or auto: held when lubrication.enabled "
-                          "(a body within the lubrication range of a wall would otherwise fall "
-                          "beside it at its buoyant weight alone), none otherwise, as the paper "
-                          "(docs/method.md §5, Coupling)."),
+                          "with lubrication.coupling = \"dem\" (a body within the lubrication "
+                          "range of a wall would otherwise fall beside it at its buoyant weight "
+                          "alone), none otherwise, as the paper (docs/method.md §5, Coupling)."),
                       &CaseConfig::contact, &ContactConfig::fluid_force));
     s.push_back(bound(positive(key("contact", "stiffness", T::real, "N/m", "none",
                                    "Linear: spring stiffness k (2D: per unit depth); or give "
@@ -682,6 +682,16 @@ std::vector<KeySpec> case_schema()
                           "retraction for the retracted layout; with it a range of several h, "
                           "e.g. 8; docs/method.md §5, \"What the grid resolves\")."),
                       &CaseConfig::lubrication, &LubricationConfig::resolved));
+    s.push_back(bound(key("lubrication", "coupling", T::string, none, "\"dem\"",
+                          "How the correction reaches a body within lubrication.range that is "
+                          "not in contact: dem (it counts as in contact, so with the paper's "
+                          "coupling the DEM sub-steps move it, with the resolved force of the step "
+                          "before held; a light body beside another then goes unstable) or "
+                          "implicit (it stays on eqs. (13)–(14), the correction's damping on "
+                          "their left-hand side with the partner's velocity lagged; the DEM takes "
+                          "over within contact.margin only; docs/method.md §5, \"Implicit "
+                          "coupling\")."),
+                      &CaseConfig::lubrication, &LubricationConfig::coupling));
 
     s.push_back(
         bound(positive(key("nondimensional", "reynolds", T::real, none, "none",

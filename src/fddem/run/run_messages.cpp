@@ -72,12 +72,18 @@ void report_derived_values(const CaseConfig& config, RunMonitor& monitor)
     }
     if (contact.fluid_force == ContactFluidForce::automatic && !config.bodies.empty() &&
         contact.model != ContactModelKind::none) {
+        const LubricationConfig& lubrication = config.lubrication;
         monitor.message(
-            config.lubrication.is_enabled
+            lubrication.is_enabled && !lubrication.is_implicit()
                 ? "fddem: contact.fluid_force auto -> held (lubrication on): a body the DEM "
                   "moves keeps the last step's resolved fluid force while it touches nothing"
+            : lubrication.is_implicit()
+                ? "fddem: contact.fluid_force auto -> none (lubrication implicit in eqs. "
+                  "(13)-(14)): the DEM moves a body within the margin by its buoyant weight, "
+                  "the contact forces and the lubrication correction"
                 : "fddem: contact.fluid_force auto -> none (lubrication off): the DEM moves a "
-                  "body in contact by its buoyant weight and the contact forces, as the paper");
+                  "body in contact by its buoyant weight and the contact forces, as the "
+                  "paper");
     }
     const bool has_sphere =
         std::any_of(config.bodies.begin(), config.bodies.end(),

@@ -224,6 +224,13 @@ struct LubricationConfig {
     double roughness = 1e-3; ///< saturation gap h_σ as a fraction of the smaller radius
     LubricationInContact in_contact = LubricationInContact::off; ///< while the surfaces overlap
     LubricationResolved resolved = LubricationResolved::range;   ///< what the grid resolves
+    LubricationCoupling coupling = LubricationCoupling::dem;     ///< bodies not in contact
+
+    /// On, and in eqs. (13)–(14) for bodies not in contact (coupling/lubrication_coupling.hpp).
+    [[nodiscard]] bool is_implicit() const noexcept
+    {
+        return is_enabled && coupling == LubricationCoupling::implicit;
+    }
 };
 
 /// [nondimensional]: given, fddem derives viscosity, gravity and body densities.

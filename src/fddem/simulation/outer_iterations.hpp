@@ -141,7 +141,9 @@ private:
     bool is_wall_marker_off_;  ///< coupling.markers_off_at_walls
     bool is_adjoint_at_walls_; ///< coupling.adjoint_at_walls
     bool is_simultaneous_;     ///< coupling.body_sweep = "simultaneous"
-    TimeScheme scheme_;        ///< time.scheme
+    /// lubrication.enabled with lubrication.coupling = "implicit"
+    bool is_lubrication_implicit_;
+    TimeScheme scheme_; ///< time.scheme
     double dt_ = 0.0;
 
     std::vector<MomentumSystem<Dim>> systems_;

@@ -8,6 +8,7 @@
 #include "fddem/bodies/kinematics.hpp"
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/hydrodynamic_force.hpp"
+#include "fddem/coupling/lubrication_coupling.hpp"
 #include "fddem/coupling/marker_placement.hpp"
 #include "fddem/coupling/marker_routes.hpp"
 #include "fddem/simulation/simulation_setup.hpp"
@@ -211,6 +212,9 @@ StepReport Simulation<Dim>::advance_unguarded()
         throw NumericalError(clock_.step + 1, clock_.time + clock_.dt, "the end of the step",
                              locate_non_finite(grid_, state_) + ": the flow has blown up");
     }
+    if (contacts_ && config_.lubrication.is_implicit()) {
+        record_linked_lubrication<Dim>(bodies_.all(), contacts_->is_paper_coupling);
+    }
     if (!bodies_.empty()) {
         move_bodies_and_markers(levels); // eq. (17)
     }
@@ -251,8 +255,11 @@ void Simulation<Dim>::resolve_contacts(StepReport& report)
     // the body touches nothing, so that a body the DEM moves (within the margin or the
     // lubrication range) keeps the fluid's resistance, as resolved codes hold the fluid force
     // over their collision sub-steps; a body resting on a wall touches it and gets none.
-    const bool holds_fluid =
-        held_fluid_force_applies(config_.contact.fluid_force, config_.lubrication.is_enabled);
+    // With lubrication.coupling = "implicit" the DEM takes a body within the margin only, as
+    // without lubrication, so "auto" holds nothing then either.
+    const bool is_implicit = config_.lubrication.is_implicit();
+    const bool holds_fluid = held_fluid_force_applies(
+        config_.contact.fluid_force, config_.lubrication.is_enabled && !is_implicit);
     for (Particle<Dim>& body : bodies_) {
         body.contact.steady_force = (body.density - properties_.density) * body.volume() * gravity_;
         body.contact.steady_torque = zero_angular<Dim>();
@@ -262,6 +269,9 @@ void Simulation<Dim>::resolve_contacts(StepReport& report)
     const DemOutcome outcome =
         advance_contacts<Dim>(bodies_.all(), contacts_->walls, contacts_->settings, clock_.dt,
                               contacts_->cells, contact_history_);
+    if (is_implicit) {
+        drop_substep_lubrication<Dim>(bodies_.all(), contacts_->is_paper_coupling);
+    }
     report.max_overlap = outcome.max_overlap;
     report.max_relative_overlap = outcome.max_relative_overlap;
     report.contacts = outcome.n_contacts;

@@ -65,6 +65,7 @@ TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
     EXPECT_FALSE(c.lubrication.is_enabled);
     EXPECT_EQ(name_of(c.lubrication.in_contact), "off"); // the schema's documented default
     EXPECT_EQ(name_of(c.lubrication.resolved), "range");
+    EXPECT_EQ(name_of(c.lubrication.coupling), "dem");
     EXPECT_EQ(c.simple.min_outer_iterations_dem, 2); // the schema's documented defaults
     EXPECT_FALSE(c.simple.is_mass_residual_held);
     EXPECT_TRUE(c.coupling.is_adjoint_at_walls);
@@ -410,6 +411,13 @@ std::vector<BadCase> bad_cases()
          20,
          "lubrication.resolved",
          "did you mean 'shells'"},
+        {"misspelt_lubrication_coupling",
+         v + "[lubrication]\nenabled = true\ncoupling = \"implict\"\n",
+         {},
+         f,
+         20,
+         "lubrication.coupling",
+         "did you mean 'implicit'"},
         {"lubrication_in_contact_not_a_word",
          v + "[lubrication]\nin_contact = false\n",
          {},
