@@ -72,7 +72,7 @@ enum class LubricationCoupling {
     /// it, and the correction acts implicitly in the sub-steps (fddem's first coupling)
     dem,
     /// the body stays on eqs. (13)–(14), with the correction's damping on their left-hand sides
-    /// (the partner's velocity lagged): the fluid's added mass and the film act together
+    /// and the bodies it joins solved together: the fluid's added mass and the film act together
     /// (coupling/lubrication_coupling.hpp)
     implicit,
 };

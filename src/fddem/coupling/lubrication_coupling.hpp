@@ -14,10 +14,12 @@
 /// and eq. (14)
 ///   (J_s/Δt + Σ K_j) ω^{n+1} = [right side of (14)] + Σ l_j × C_j (S_j − U_i),
 /// K_j = c_t (|l_j|² 1 − l_j l_jᵀ) (c_t |l_j|² in 2D), the part of −l_j × C_j (ω × l_j) that is
-/// linear in ω (the normal part gives none: ω × l_j is normal to n). What is not the body's own
-/// unknown in that equation (S_j; ω_i in (13), U_i in (14)) is the latest value, so the outer
-/// iterations converge the pair; with the sequential sweep the partner's is the one it got in
-/// the same iteration (a Gauss–Seidel sweep over the pair).
+/// linear in ω (the normal part gives none: ω × l_j is normal to n). The bodies the links join
+/// (a group, linked_groups) have their eqs. (13) solved together (coupled_velocities), so the
+/// partner's U_k is implicit too; then each one's eq. (14) with the group's new velocities. What
+/// stays at its latest value, for the outer iterations to converge: the ω in eq. (13), the
+/// partners' ω in eq. (14), and S_j of a partner outside the group (a wall, a fixed, prescribed
+/// or DEM-moved body).
 ///
 /// Why implicit: the film's c_n grows as 1/h (3D) or h^(−3/2) (2D) and soon exceeds m/Δt.
 /// Added explicitly, the force overshoots once c Δt > m; implicit, the body's relative velocity

@@ -688,9 +688,9 @@ std::vector<KeySpec> case_schema()
                           "coupling the DEM sub-steps move it, with the resolved force of the step "
                           "before held; a light body beside another then goes unstable) or "
                           "implicit (it stays on eqs. (13)–(14), the correction's damping on "
-                          "their left-hand side with the partner's velocity lagged; the DEM takes "
-                          "over within contact.margin only; docs/method.md §5, \"Implicit "
-                          "coupling\")."),
+                          "their left-hand side, the bodies the film joins solved together; the "
+                          "DEM takes over within contact.margin only; docs/method.md §5, "
+                          "\"Implicit coupling of the film\")."),
                       &CaseConfig::lubrication, &LubricationConfig::coupling));
 
     s.push_back(

@@ -293,6 +293,66 @@ TEST(RigidUpdate, TouchingBodiesReachTheSameForcingFromEitherSweep)
     EXPECT_LT(converged, 1e-3 * first);
 }
 
+/// Two free disks 0.5 h apart sliding past each other (sweep_pair), joined by a film
+/// (lubrication.coupling = "implicit"): c_n = 50 and c_t = 5 times m/Δt, one sweep.
+SweptPair swept_linked_pair(bool is_simultaneous, bool is_linked)
+{
+    const MacGrid<2> grid = unit_box();
+    SweptPair out = sweep_pair(0.5 / 32.0, is_simultaneous, 0, Motion::free);
+    const double a = out.bodies[0].radius();
+    const double rate = out.bodies[0].mass() / 0.01;
+    const LubricationResistance film{50.0 * rate, 5.0 * rate};
+    const Vec<2> x = Vec<2>::UnitX();
+    if (is_linked) {
+        out.bodies[0].contact.lubrication_links = {
+            {1, x, Vec<2>(a * x), Vec<2>(-a * x), Vec<2>::Zero(), film}};
+        out.bodies[1].contact.lubrication_links = {
+            {0, Vec<2>(-x), Vec<2>(-a * x), Vec<2>(a * x), Vec<2>::Zero(), film}};
+    }
+    RigidUpdateSettings<2> settings{1.0, Vec<2>(0.0, -1.0), 0.01, false};
+    settings.is_simultaneous = is_simultaneous;
+    settings.is_lubrication_implicit = true;
+    (void)update_rigid_bodies<2>(out.bodies, grid, AnyKernel{HatKernel{}}, settings, out.u);
+    return out;
+}
+
+TEST(RigidUpdate, BodiesAFilmJoinsAreUpdatedTogetherInEitherSweep)
+{
+    // Both sweeps update the pair the film joins as one group from the same u: the same motion
+    // and λ to the last bit. The film is internal: the pair's momentum is what it is without
+    // it (the same u and λ* enter both; without it, the simultaneous sweep), the approach (along x)
+    // and the slip (along y) are slowed, and eq. (14) turns both disks counter-clockwise by its
+    // turning resistance alone (u = 0 and ω^n = 0 give no other moment): ω = a c_t Δv_y / (J/Δt +
+    // c_t a²).
+    const SweptPair sequential = swept_linked_pair(false, true);
+    const SweptPair simultaneous = swept_linked_pair(true, true);
+    const SweptPair unlinked = swept_linked_pair(true, false); // both from u = 0 too
+    EXPECT_EQ(lambda_difference(sequential, simultaneous), 0.0);
+    const auto& p = sequential.bodies;
+    const auto& q = unlinked.bodies;
+    for (std::size_t b = 0; b < 2; ++b) {
+        EXPECT_EQ(p[b].velocity, simultaneous.bodies[b].velocity) << b;
+        EXPECT_EQ(p[b].omega, simultaneous.bodies[b].omega) << b;
+        EXPECT_EQ(q[b].omega, 0.0) << b;
+    }
+    const Vec<2> momentum = p[0].mass() * p[0].velocity + p[1].mass() * p[1].velocity;
+    const Vec<2> free = q[0].mass() * q[0].velocity + q[1].mass() * q[1].velocity;
+    EXPECT_LT((momentum - free).norm(), 1e-12 * free.norm());
+    const Vec<2> relative = p[1].velocity - p[0].velocity;
+    const Vec<2> relative_free = q[1].velocity - q[0].velocity;
+    EXPECT_GT(relative.x(), 0.0); // still parting, more slowly
+    EXPECT_LT(relative.x(), 0.1 * relative_free.x());
+    EXPECT_GT(relative.y(), 0.0);
+    EXPECT_LT(relative.y(), relative_free.y());
+    const double a = p[0].radius();
+    const double c_t = 5.0 * p[0].mass() / 0.01;
+    for (std::size_t b = 0; b < 2; ++b) {
+        const double expected = a * c_t * relative.y() / (p[b].inertia() / 0.01 + c_t * a * a);
+        EXPECT_GT(p[b].omega, 0.0) << b;
+        EXPECT_NEAR(p[b].omega, expected, 1e-12 * expected) << b;
+    }
+}
+
 TEST(HydrodynamicForce, IsTheMomentumBalanceOfTheMarkers)
 {
     // F_H = ρf V ΔU/Δt − ρf Σ ΔV_l λ_l; with λ uniform and U unchanged, F_H = −ρf V λ.
