@@ -60,8 +60,9 @@ struct DemSettings {
     /// damping impulse of their relative normal and tangential surface velocities. With
     /// coupling "dem" they count as in contact (as within the margin: with the paper's coupling
     /// the DEM moves them, so the damping acts on the velocity the body keeps); with "implicit"
-    /// they do not, and each body's gaps at the step's start are kept in
-    /// contact.lubrication_links for eqs. (13)–(14). The cell list must reach
+    /// only those whose gap opens do (a body leaving a wall or another body), and each body's
+    /// gaps at the step's start are kept in contact.lubrication_links for eqs. (13)–(14). The
+    /// cell list must reach
     /// 2 r_max + max(margin, range).
     LubricationSettings lubrication{};
 };

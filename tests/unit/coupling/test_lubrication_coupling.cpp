@@ -159,6 +159,29 @@ TEST(LubricationCoupling, DemFindsTheLinksWithoutCountingTheBodyInContact)
     EXPECT_TRUE(pair[0].contact.lubrication_links.empty());
 }
 
+TEST(LubricationCoupling, ABodyLeavingWithinTheRangeIsMovedByTheDem)
+{
+    // A sphere 1 mm above the floor (range 2 mm): closing, it stays with eqs. (13)–(14) (not in
+    // contact, with a link); rising, it counts as in contact for the step, as under "dem"; a
+    // sphere rising from 3 mm (out of the range) does not.
+    const double a = 0.01;
+    const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
+    DemSettings settings{LinearSpringDashpot({1e3, 0.0}, 1.0), 0.0, 10};
+    settings.lubrication = {true, 1.0, 0.002, 1e-3};
+    settings.lubrication.coupling = LubricationCoupling::implicit;
+    CellList<3> cells(floor.origin, floor.length, 0.03);
+    ContactHistory<3> history;
+    const auto in_contact = [&](double gap, double w) {
+        std::vector<Particle<3>> bodies{
+            test::ball<3>(Vec<3>(0.05, 0.05, a + gap), Vec<3>(0.0, 0.0, w), a, 2000.0)};
+        test::step_dem<3>(bodies, floor, settings, 1e-3, cells, history);
+        return bodies[0].contact.is_in_contact;
+    };
+    EXPECT_FALSE(in_contact(1e-3, -0.001));
+    EXPECT_TRUE(in_contact(1e-3, 0.001));
+    EXPECT_FALSE(in_contact(3e-3, 0.001));
+}
+
 /// Eq. (13) of a body without markers and without fluid inside (ρf = 0): its balance from U^n.
 template <int Dim>
 RigidBalance<Dim> dry_balance(const Vec<Dim>& velocity_n, double mass, double dt)
