@@ -98,6 +98,16 @@ TEST(LubricationCoupling, LinkForceIsTheDamperAndItsAffineSplitIsExact)
     check_affine_split<3>();
 }
 
+/// The sub-steps of a stiff-enough linear contact (10 a step) with the film of μ = 1 Pa·s,
+/// range 2 mm, coupled implicitly.
+DemSettings implicit_film()
+{
+    DemSettings settings{LinearSpringDashpot({1e3, 0.0}, 1.0), 0.0, 10};
+    settings.lubrication = {true, 1.0, 0.002, 1e-3};
+    settings.lubrication.coupling = LubricationCoupling::implicit;
+    return settings;
+}
+
 TEST(LubricationCoupling, DemFindsTheLinksWithoutCountingTheBodyInContact)
 {
     // A sphere 1 mm above the floor and another 1 mm beside it, range 2 mm: with coupling
@@ -109,9 +119,7 @@ TEST(LubricationCoupling, DemFindsTheLinksWithoutCountingTheBodyInContact)
         test::ball<3>(Vec<3>(0.05, 0.05, a + 1e-3), Vec<3>(0.0, 0.0, -0.001), a, 2000.0),
         test::ball<3>(Vec<3>(0.05 + 2 * a + 1e-3, 0.05, 0.05), Vec<3>::Zero(), a, 2000.0)};
     const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
-    DemSettings settings{LinearSpringDashpot({1e3, 0.0}, 1.0), 0.0, 10};
-    settings.lubrication = {true, 1.0, 0.002, 1e-3};
-    settings.lubrication.coupling = LubricationCoupling::implicit;
+    DemSettings settings = implicit_film();
     CellList<3> cells(floor.origin, floor.length, 0.03);
     ContactHistory<3> history;
     test::step_dem<3>(bodies, floor, settings, 1e-3, cells, history);
@@ -166,9 +174,7 @@ TEST(LubricationCoupling, ABodyLeavingWithinTheRangeIsMovedByTheDem)
     // sphere rising from 3 mm (out of the range) does not.
     const double a = 0.01;
     const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
-    DemSettings settings{LinearSpringDashpot({1e3, 0.0}, 1.0), 0.0, 10};
-    settings.lubrication = {true, 1.0, 0.002, 1e-3};
-    settings.lubrication.coupling = LubricationCoupling::implicit;
+    DemSettings settings = implicit_film();
     CellList<3> cells(floor.origin, floor.length, 0.03);
     ContactHistory<3> history;
     const auto in_contact = [&](double gap, double w) {
