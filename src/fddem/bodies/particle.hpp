@@ -72,7 +72,9 @@ struct ContactState {
     /// The body's gaps within the lubrication range at the step's start, for the implicit
     /// coupling (lubrication.coupling = "implicit"); empty otherwise.
     std::vector<LubricationLink<Dim>> lubrication_links;
-    bool is_in_contact = false; ///< touched something (or came within the margin) this step
+    /// touched something, or came within the margin (or opened a gap within the lubrication
+    /// range, lubrication.coupling "implicit") this step
+    bool is_in_contact = false;
 };
 
 template <int Dim>

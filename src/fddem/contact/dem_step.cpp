@@ -13,7 +13,8 @@ namespace fddem {
 namespace {
 
 /// Whether a body within the lubrication range counts as in contact (lubrication.coupling
-/// "dem"); with "implicit" only the margin does.
+/// "dem"); with "implicit" only the margin does, and a gap opening within the range
+/// (ContactForces::mark_if_near).
 bool counts_range_as_contact(const LubricationSettings& lubrication)
 {
     return lubrication.is_enabled && lubrication.coupling == LubricationCoupling::dem;
@@ -194,18 +195,22 @@ public:
 
     std::vector<Vec<Dim>> force;
     std::vector<AngularVec<Dim>> torque;
-    std::vector<char> has_contact; ///< touched (or came within the margin) during the step
-    std::vector<char> touching;    ///< overlaps a body or a wall at the state last evaluated
+    /// touched, came within the margin (or, lubrication.coupling "implicit", opened a gap within
+    /// the lubrication range) during the step
+    std::vector<char> has_contact;
+    std::vector<char> touching; ///< overlaps a body or a wall at the state last evaluated
     int in_contact = 0;
 
 private:
     /// A pair apart by less than the margin counts as in contact (DemSettings::margin) but
     /// exerts no force; `second` = n is a wall. With lubrication.coupling = "implicit" so does
-    /// a pair within the lubrication range whose gap opens (α̇ < 0): a body leaving a wall or
-    /// another body, typically just after a collision, is moved by the DEM until it is out of
-    /// the range, as with "dem" (docs/method.md §5, "Implicit coupling of the film": back on
-    /// eqs. (13)–(14) right after the contact, a rebounding sphere met a resolved force up to 40
-    /// times its drag and lost half its speed at St 431).
+    /// a pair within the lubrication range whose gap opens (α̇ < 0, any rate: no threshold): a
+    /// body leaving a wall or another body, typically just after a collision, is moved by the
+    /// DEM until it is out of the range, as with "dem" but without the held fluid force
+    /// ("auto" is none with "implicit"); both bodies of a pair are marked (docs/method.md §5,
+    /// "Implicit coupling of the film": back on eqs. (13)–(14) right after the contact, a
+    /// rebounding sphere met a resolved force up to 40 times its drag and lost half its speed
+    /// at St 431).
     void mark_if_near(const ContactGeometry<Dim>& g, std::size_t first, std::size_t second)
     {
         const bool is_leaving = lubrication_.is_enabled &&

@@ -74,7 +74,7 @@ enum class LubricationCoupling {
     /// the body stays on eqs. (13)–(14), with the correction's damping on their left-hand sides
     /// and the bodies it joins solved together: the fluid's added mass and the film act together
     /// (coupling/lubrication_coupling.hpp); a body whose gap opens within the range is the DEM's
-    /// until it is out of it, as with `dem`
+    /// until it is out of it, as with `dem` but without the held fluid force
     implicit,
 };
 
