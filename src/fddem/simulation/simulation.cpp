@@ -213,6 +213,8 @@ StepReport Simulation<Dim>::advance_unguarded()
                              locate_non_finite(grid_, state_) + ": the flow has blown up");
     }
     if (contacts_ && config_.lubrication.is_implicit()) {
+        // lubrication.coupling = "implicit" (fddem's, not the paper's): the film's force at the
+        // motion eqs. (13)–(14) gave, as the lubrication force of each body they moved
         record_linked_lubrication<Dim>(bodies_.all(), contacts_->is_paper_coupling);
     }
     if (!bodies_.empty()) {
@@ -255,8 +257,9 @@ void Simulation<Dim>::resolve_contacts(StepReport& report)
     // the body touches nothing, so that a body the DEM moves (within the margin or the
     // lubrication range) keeps the fluid's resistance, as resolved codes hold the fluid force
     // over their collision sub-steps; a body resting on a wall touches it and gets none.
-    // With lubrication.coupling = "implicit" the DEM takes a body within the margin only, as
-    // without lubrication, so "auto" holds nothing then either.
+    // With lubrication.coupling = "implicit" the DEM takes a body in contact, within the margin
+    // or leaving within the range, and "auto" holds nothing (a light body beside another blew
+    // up with the held force: docs/method.md §5, "Implicit coupling of the film").
     const bool is_implicit = config_.lubrication.is_implicit();
     const bool holds_fluid = held_fluid_force_applies(
         config_.contact.fluid_force, config_.lubrication.is_enabled && !is_implicit);
@@ -270,6 +273,7 @@ void Simulation<Dim>::resolve_contacts(StepReport& report)
         advance_contacts<Dim>(bodies_.all(), contacts_->walls, contacts_->settings, clock_.dt,
                               contacts_->cells, contact_history_);
     if (is_implicit) {
+        // the film on a body eqs. (13)–(14) move enters them implicitly, not as a mean force
         drop_substep_lubrication<Dim>(bodies_.all(), contacts_->is_paper_coupling);
     }
     report.max_overlap = outcome.max_overlap;
