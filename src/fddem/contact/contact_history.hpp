@@ -2,10 +2,11 @@
 #pragma once
 /// The state of the contacts that persists from one sub-step and time step to the next: the
 /// elastic tangential displacement ξ of each open contact (tangential_contact.hpp) and, for a
-/// model that fixes them when a contact opens (the adaptive model), its normal constants. Plain
-/// data, owned by the caller (Simulation), so that a checkpoint can write and read it as it is. An
-/// entry lives exactly as long as its contact: the DEM step rebuilds the list at every force
-/// evaluation from the contacts that are open, so a contact that opens is dropped.
+/// model that fixes them when a contact opens (the adaptive model), its normal constants, and
+/// (lubrication.coupling = "implicit") the collisions still under way. Plain data, owned by the
+/// caller (Simulation), so that a checkpoint can write and read it as it is. The DEM step
+/// rebuilds the lists at every force evaluation: a spring or constants live exactly as long as
+/// their contact, a rebound until the gap opens beyond the lubrication range.
 
 #include "fddem/contact/contact_model.hpp"
 #include "fddem/core/vec.hpp"
@@ -79,6 +80,20 @@ struct PairCoefficients {
     }
 };
 
+/// A contact that has touched and whose gap has not since opened beyond the lubrication range: a
+/// collision still under way (lubrication.coupling = "implicit": a body leaving it within the
+/// range is the DEM's, docs/method.md §5, "Implicit coupling of the film").
+struct Rebound {
+    ContactKey key;
+    /// Lists the members for a checkpoint archive (io/checkpoint_archive.hpp).
+    template <class Self, class Archive>
+    static void visit(Self& s, Archive& archive)
+    {
+        archive("rebound.first", s.key.first);
+        archive("rebound.second", s.key.second);
+    }
+};
+
 /// The entry of `key` in `entries` (sorted by key), or nullptr.
 template <class Entry>
 [[nodiscard]] const Entry* find_by_key(const std::vector<Entry>& entries, const ContactKey& key)
@@ -92,6 +107,9 @@ template <int Dim>
 struct ContactHistory {
     std::vector<TangentialSpring<Dim>> springs; ///< sorted by key, one per open contact
     std::vector<PairCoefficients> coefficients; ///< sorted by key, one per open contact
+    /// sorted by key: the collisions under way (Rebound); kept only with lubrication.coupling =
+    /// "implicit", empty otherwise
+    std::vector<Rebound> rebounds;
 
     /// The spring of `key`, or nullptr if the contact has none (it just closed, or is
     /// frictionless).
@@ -104,6 +122,11 @@ struct ContactHistory {
     [[nodiscard]] const PairCoefficients* find_coefficients(const ContactKey& key) const
     {
         return find_by_key(coefficients, key);
+    }
+    /// Whether the contact of `key` has touched since its gap was last beyond the range.
+    [[nodiscard]] bool is_rebounding(const ContactKey& key) const
+    {
+        return find_by_key(rebounds, key) != nullptr;
     }
 };
 

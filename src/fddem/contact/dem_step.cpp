@@ -85,6 +85,8 @@ public:
         history_.springs.clear();
         previous_.coefficients.swap(history_.coefficients);
         history_.coefficients.clear();
+        previous_.rebounds.swap(history_.rebounds);
+        history_.rebounds.clear();
         step_ = step;
         stretch_ = is_new_substep ? step : 0.0;
         in_contact = 0;
@@ -96,12 +98,12 @@ public:
             }
             const ContactGeometry<Dim> g =
                 ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]), domain_);
+            const ContactKey key = pair_contact_key(bodies[a].id, bodies[b].id);
+            mark_if_near(g, key, a, b);
             if (g.overlap <= 0.0) {
-                mark_if_near(g, a, b);
                 continue;
             }
-            apply(g, a, b, pair_contact_key(bodies[a].id, bodies[b].id),
-                  key_orientation(bodies[a].id, bodies[b].id),
+            apply(g, a, b, key, key_orientation(bodies[a].id, bodies[b].id),
                   make_contact_pair(side_of(bodies[a]), side_of(bodies[b])),
                   std::min(bodies[a].radius(), bodies[b].radius()), outcome);
         }
@@ -111,9 +113,10 @@ public:
                 continue;
             }
             const ContactGeometry<Dim> g = wall_contact(bodies[a], d, side);
-            mark_if_near(g, a, bodies.size());
+            const ContactKey key = wall_contact_key(bodies[a].id, d, side);
+            mark_if_near(g, key, a, bodies.size());
             if (g.overlap > 0.0) {
-                apply(g, a, bodies.size(), wall_contact_key(bodies[a].id, d, side), 1.0,
+                apply(g, a, bodies.size(), key, 1.0,
                       make_contact_pair(side_of(bodies[a]), wall_side(walls_.material)),
                       bodies[a].radius(), outcome);
             }
@@ -121,6 +124,7 @@ public:
         const auto by_key = [](const auto& x, const auto& y) { return x.key < y.key; };
         std::sort(history_.springs.begin(), history_.springs.end(), by_key);
         std::sort(history_.coefficients.begin(), history_.coefficients.end(), by_key);
+        std::sort(history_.rebounds.begin(), history_.rebounds.end(), by_key);
     }
 
     /// The contact geometry of `body` with the wall on `side` (0 low, 1 high) of axis `d`.
@@ -204,19 +208,25 @@ public:
 private:
     /// A pair apart by less than the margin counts as in contact (DemSettings::margin) but
     /// exerts no force; `second` = n is a wall. With lubrication.coupling = "implicit" so does
-    /// a pair within the lubrication range whose gap opens (α̇ < 0, any rate: no threshold): a
-    /// body leaving a wall or another body, typically just after a collision, is moved by the
-    /// DEM until it is out of the range, as with "dem" but without the held fluid force
-    /// ("auto" is none with "implicit"); both bodies of a pair are marked (docs/method.md §5,
-    /// "Implicit coupling of the film": back on eqs. (13)–(14) right after the contact, a
-    /// rebounding sphere met a resolved force up to 40 times its drag and lost half its speed
-    /// at St 431).
-    void mark_if_near(const ContactGeometry<Dim>& g, std::size_t first, std::size_t second)
+    /// a pair leaving a collision (the rebound rule): it touched, its gap has not opened beyond
+    /// the lubrication range since, and it opens now (α̇ < 0, any rate: no threshold). Such a
+    /// body is moved by the DEM until it is out of the range, as with "dem" but without the
+    /// held fluid force ("auto" is none with "implicit"); both bodies of a pair are marked
+    /// (docs/method.md §5, "Implicit coupling of the film": back on eqs. (13)–(14) right after
+    /// the contact, a rebounding sphere met a resolved force up to 40 times its drag and lost
+    /// half its speed at St 431). A gap that opens without a collision before (bodies drifting
+    /// apart in a settling cloud) stays with eqs. (13)–(14): handed to the DEM, without a fluid
+    /// force, such spheres fell as in vacuum (the 200-sphere soak).
+    void mark_if_near(const ContactGeometry<Dim>& g, const ContactKey& key, std::size_t first,
+                      std::size_t second)
     {
-        const bool is_leaving = lubrication_.is_enabled &&
-                                lubrication_.coupling == LubricationCoupling::implicit &&
-                                g.overlap > -lubrication_.range && g.overlap_rate < 0.0;
-        if (g.overlap > -margin_ || is_leaving) {
+        const bool is_rebounding =
+            lubrication_.is_enabled && lubrication_.coupling == LubricationCoupling::implicit &&
+            g.overlap > -lubrication_.range && (g.overlap > 0.0 || previous_.is_rebounding(key));
+        if (is_rebounding) {
+            history_.rebounds.push_back({key});
+        }
+        if (g.overlap > -margin_ || (is_rebounding && g.overlap_rate < 0.0)) {
             mark(first, second);
         }
     }

@@ -73,8 +73,9 @@ enum class LubricationCoupling {
     dem,
     /// the body stays on eqs. (13)–(14), with the correction's damping on their left-hand sides
     /// and the bodies it joins solved together: the fluid's added mass and the film act together
-    /// (coupling/lubrication_coupling.hpp); a body whose gap opens within the range is the DEM's
-    /// until it is out of it, as with `dem` but without the held fluid force
+    /// (coupling/lubrication_coupling.hpp); a body leaving a collision (its gap opening within
+    /// the range after a touch) is the DEM's until it is out of the range, as with `dem` but
+    /// without the held fluid force
     implicit,
 };
 

@@ -689,8 +689,9 @@ std::vector<KeySpec> case_schema()
                           "before held; a light body beside another then goes unstable) or "
                           "implicit (it stays on eqs. (13)–(14), the correction's damping on "
                           "their left-hand side, the bodies the film joins solved together; the "
-                          "DEM takes over within contact.margin, and while the gap opens within "
-                          "the range; docs/method.md §5, \"Implicit coupling of the film\")."),
+                          "DEM takes over within contact.margin, and while a body leaves a "
+                          "collision within the range; docs/method.md §5, \"Implicit coupling of "
+                          "the film\")."),
                       &CaseConfig::lubrication, &LubricationConfig::coupling));
 
     s.push_back(

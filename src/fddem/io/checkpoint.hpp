@@ -30,8 +30,8 @@ namespace fddem {
 /// The format version written; only this one is read (a new state member bumps it).
 // 2: springs; 3: rest_since; 4: the adaptive time step's residual history; 5: the per-contact
 // constants of the adaptive collision model; 6: the last step's Δt and each body's U^{n−1},
-// ω^{n−1} (time.scheme = "bdf2")
-inline constexpr std::uint64_t checkpoint_format_version = 6;
+// ω^{n−1} (time.scheme = "bdf2"); 7: the collisions under way (lubrication.coupling = "implicit")
+inline constexpr std::uint64_t checkpoint_format_version = 7;
 
 /// (key, value as text) pairs: what a checkpoint's grid and bodies must share with the case it
 /// is restored into.

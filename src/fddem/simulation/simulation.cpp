@@ -258,8 +258,8 @@ void Simulation<Dim>::resolve_contacts(StepReport& report)
     // lubrication range) keeps the fluid's resistance, as resolved codes hold the fluid force
     // over their collision sub-steps; a body resting on a wall touches it and gets none.
     // With lubrication.coupling = "implicit" the DEM takes a body in contact, within the margin
-    // or leaving within the range, and "auto" holds nothing (a light body beside another blew
-    // up with the held force: docs/method.md §5, "Implicit coupling of the film").
+    // or leaving a collision within the range, and "auto" holds nothing (a light body beside
+    // another blew up with the held force: docs/method.md §5, "Implicit coupling of the film").
     const bool is_implicit = config_.lubrication.is_implicit();
     const bool holds_fluid = held_fluid_force_applies(
         config_.contact.fluid_force, config_.lubrication.is_enabled && !is_implicit);

@@ -202,6 +202,7 @@ private:
         }
         archive("contact.tangential_springs", self.contact_history_.springs);
         archive("contact.pair_coefficients", self.contact_history_.coefficients);
+        archive("contact.rebounds", self.contact_history_.rebounds);
         archive("rest_since", self.rest_since_);
         archive("time_step.residual", self.step_history_.residual);
         archive("time_step.previous_residual", self.step_history_.previous_residual);

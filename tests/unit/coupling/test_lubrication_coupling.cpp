@@ -167,11 +167,14 @@ TEST(LubricationCoupling, DemFindsTheLinksWithoutCountingTheBodyInContact)
     EXPECT_TRUE(pair[0].contact.lubrication_links.empty());
 }
 
-TEST(LubricationCoupling, ABodyLeavingWithinTheRangeIsMovedByTheDem)
+TEST(LubricationCoupling, ABodyLeavingACollisionWithinTheRangeIsMovedByTheDem)
 {
-    // A sphere 1 mm above the floor (range 2 mm): closing, it stays with eqs. (13)–(14) (not in
-    // contact, with a link); rising, it counts as in contact for the step, as under "dem"; a
-    // sphere rising from 3 mm (out of the range) does not.
+    // A sphere 1 mm above the floor (range 2 mm). Without a collision before, it stays with
+    // eqs. (13)–(14) (not in contact, with a link) whether its gap closes or opens: spheres
+    // drifting apart in a settling cloud keep their fluid force. Once it has touched the floor,
+    // rising through the range counts as in contact for the step, as under "dem" (the rebound
+    // rule), until the gap has opened beyond the range; a later rise within the range is not a
+    // rebound any more.
     const double a = 0.01;
     const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
     DemSettings settings = implicit_film();
@@ -184,8 +187,35 @@ TEST(LubricationCoupling, ABodyLeavingWithinTheRangeIsMovedByTheDem)
         return bodies[0].contact.is_in_contact;
     };
     EXPECT_FALSE(in_contact(1e-3, -0.001));
-    EXPECT_TRUE(in_contact(1e-3, 0.001));
-    EXPECT_FALSE(in_contact(3e-3, 0.001));
+    EXPECT_FALSE(in_contact(1e-3, 0.001)) << "drifting apart without a collision";
+    EXPECT_TRUE(history.rebounds.empty());
+
+    EXPECT_TRUE(in_contact(-1e-5, 0.001)); // touching
+    ASSERT_EQ(history.rebounds.size(), 1U);
+    EXPECT_EQ(history.rebounds[0].key, wall_contact_key(0, 2, 0));
+    EXPECT_TRUE(in_contact(1e-3, 0.001)) << "leaving the collision within the range";
+    EXPECT_FALSE(in_contact(1e-3, -0.001)) << "closing again: eqs. (13)-(14)";
+    EXPECT_EQ(history.rebounds.size(), 1U) << "still within the range: the collision goes on";
+    EXPECT_FALSE(in_contact(3e-3, 0.001)); // beyond the range: the collision is over
+    EXPECT_TRUE(history.rebounds.empty());
+    EXPECT_FALSE(in_contact(1e-3, 0.001)) << "a later rise is not a rebound";
+}
+
+TEST(LubricationCoupling, OnlyTheImplicitCouplingKeepsCollisionsUnderWay)
+{
+    // The record is the implicit coupling's alone: with "dem" (or lubrication off) a touch
+    // leaves no rebound behind, so checkpoints and runs without it are what they were.
+    const double a = 0.01;
+    const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
+    DemSettings settings = implicit_film();
+    settings.lubrication.coupling = LubricationCoupling::dem;
+    CellList<3> cells(floor.origin, floor.length, 0.03);
+    ContactHistory<3> history;
+    std::vector<Particle<3>> bodies{
+        test::ball<3>(Vec<3>(0.05, 0.05, a - 1e-5), Vec<3>(0.0, 0.0, 0.001), a, 2000.0)};
+    test::step_dem<3>(bodies, floor, settings, 1e-3, cells, history);
+    EXPECT_TRUE(bodies[0].contact.is_in_contact);
+    EXPECT_TRUE(history.rebounds.empty());
 }
 
 /// Eq. (13) of a body without markers and without fluid inside (ρf = 0): its balance from U^n.
