@@ -377,8 +377,13 @@ def restitution_check(stokes, viscosity, end):
         r = rebound.restitution(run_dir)
         fit = rebound.legendre_fit(r["stokes"])
         where = "impact speed measured" if r["t_contact"] is not None else "never touches: speed at gap 1 d"
+        # The film's own share (rebound.film_restitution: the correction's impulse in and out,
+        # no resolved flow): what the lubrication model alone allows, beside the fit.
+        film = rebound.film_restitution_of_run(run_dir, r["stokes"]) if r["rebounds"] else None
         return [(f"e_eff/e_dry at St {r['stokes']:.1f} ({where})"
-                 + ("" if r["rebounds"] else ": no rebound"), r["ratio"], fit, REBOUND_BAND,
+                 + ("" if r["rebounds"] else ": no rebound")
+                 + ("" if film is None else f"; the film alone would give {film:.3f}"),
+                 r["ratio"], fit, REBOUND_BAND,
                  "Legendre et al. (2006) exp(−35/St) (legendre2006_fit.md); ± 0.1, a judgement "
                  "(REBOUND_BAND: no published scatter was found)")]
 

@@ -271,6 +271,56 @@ def legendre_fit(stokes):
     return math.exp(-LEGENDRE_BETA / stokes)
 
 
+def film_passage_integral(range_over_a, roughness_over_a):
+    """J = ∫ c_corr(h) dh / (6πμ a²) over one passage of a sphere through the film to a wall,
+    h from the range h_Δ down to 0, for the correction fddem adds (src/fddem/contact/
+    lubrication.hpp, lubrication.resolved = "range"): c(h) = 6πμa [a/h + ln(a/h)/5] (Cox &
+    Brenner 1967), c_corr = c(max(h, h_σ)) − c(h_Δ). Because the film's force is c v and
+    dh = v dt, its impulse over the passage is 6πμa² J whatever the speed: the sphere loses
+    Δv = J v/St (St = ρs v d/(9μ)) on the way in, and again on the way out. In closed form, with
+    x = h/a:
+        J = ln(x_Δ/x_σ) + [x_Δ (1 − ln x_Δ) − x_σ (1 − ln x_σ)]/5 − x_Δ c(x_Δ) + x_σ c(x_σ),
+        c(x) = 1/x + ln(1/x)/5."""
+    x_range, x_rough = float(range_over_a), float(roughness_over_a)
+    if not 0.0 < x_rough < x_range <= 1.0:
+        raise ValueError(f"need 0 < roughness < range <= a, got {x_rough} and {x_range}")
+
+    def resistance(x):
+        return 1.0 / x + math.log(1.0 / x) / 5.0
+
+    return (math.log(x_range / x_rough)
+            + (x_range * (1.0 - math.log(x_range)) - x_rough * (1.0 - math.log(x_rough))) / 5.0
+            - x_range * resistance(x_range) + x_rough * resistance(x_rough))
+
+
+def film_restitution(stokes, e_dry, range_over_a, roughness_over_a):
+    """e_eff/e_dry of a sphere bouncing on a wall whose only losses are the dry contact (e_dry)
+    and the lubrication correction (film_passage_integral), in and out: the film's own share of
+    the restitution, without the resolved flow. St at the speed with which the sphere enters the
+    film. 0 if the film stops it on the way in or on the way out."""
+    if not stokes > 0.0:
+        raise ValueError(f"the Stokes number must be positive, got {stokes}")
+    loss = film_passage_integral(range_over_a, roughness_over_a) / stokes
+    touch = 1.0 - loss
+    leave = e_dry * touch - loss
+    return max(leave, 0.0) / e_dry if touch > 0.0 else 0.0
+
+
+def film_restitution_of_run(run_dir, stokes):
+    """film_restitution() with the run's own e_dry, lubrication.range (in grid spacings, the
+    largest) and lubrication.roughness (in radii), at `stokes`; None without lubrication."""
+    case = io.read_case(run_dir)
+    lubrication = case.get("lubrication", {})
+    if not lubrication.get("enabled", False):
+        return None
+    radius = 0.5 * float(case["bodies"][0]["diameter"])
+    domain = case["domain"]
+    spacing = max(float(L) / int(n) for L, n in zip(domain["size"], domain["cells"]))
+    return film_restitution(stokes, float(case.get("contact", {}).get("restitution", 1.0)),
+                            float(lubrication.get("range", 2.0)) * spacing / radius,
+                            float(lubrication.get("roughness", 0.001)))
+
+
 def restitution(run_dir):
     """St, v_in, v_out, e_eff, e_eff/e_dry ("ratio") and the contact's speed ratio of one rebound
     run, as a dict. St = ρp v_in d/(9μ) at the impact speed v_in measured from the trajectory

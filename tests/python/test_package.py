@@ -844,6 +844,33 @@ class Rebound(unittest.TestCase):
         self.assertAlmostEqual(s["separation"], 0.5)
         self.assertAlmostEqual(s["e_contact"], 0.5)
 
+    def test_film_passage_integral_and_the_films_own_restitution(self):
+        # The closed form against the integral of the correction itself (trapezoids on a
+        # logarithmic grid), at the shipped defaults (range 2 h = a/2 at d/h = 8, roughness
+        # 1e-3 a) and at another pair; then the film's restitution from it.
+        def integral(x_range, x_rough):
+            def c(x):
+                return 1.0 / x + np.log(1.0 / x) / 5.0
+            x = np.geomspace(x_rough, x_range, 400001)
+            y = c(x) - c(x_range)
+            film = np.sum(0.5 * (y[1:] + y[:-1]) * np.diff(x))
+            return film + x_rough * (c(x_rough) - c(x_range))  # held at c(h_σ) below h_σ
+        for x_range, x_rough in ((0.5, 1e-3), (0.25, 1e-4)):
+            self.assertAlmostEqual(rebound.film_passage_integral(x_range, x_rough),
+                                   integral(x_range, x_rough), delta=1e-6)
+        self.assertAlmostEqual(rebound.film_passage_integral(0.5, 1e-3), 6.3144, delta=1e-4)
+        # In at 1, touching at 1 − J/St, out at e_dry (1 − J/St) − J/St.
+        j = rebound.film_passage_integral(0.5, 1e-3)
+        self.assertAlmostEqual(rebound.film_restitution(39.0, 0.97, 0.5, 1e-3),
+                               (0.97 * (1.0 - j / 39.0) - j / 39.0) / 0.97, delta=1e-15)
+        self.assertEqual(rebound.film_restitution(j, 0.97, 0.5, 1e-3), 0.0)  # stopped at the wall
+        self.assertEqual(rebound.film_restitution(1.5 * j, 0.97, 0.5, 1e-3), 0.0)  # and on the way out
+        self.assertGreater(rebound.film_restitution(1e4, 0.97, 0.5, 1e-3), 0.998)
+        with self.assertRaises(ValueError):
+            rebound.film_passage_integral(0.5, 0.6)
+        with self.assertRaises(ValueError):
+            rebound.film_restitution(-20.0, 0.97, 0.5, 1e-3)
+
     def test_restitution_and_stokes_number_of_a_bounce(self):
         # e_eff/e_dry = E/e_dry and St = ρp v_in d/(9μ), v_in from the trajectory's own fit.
         t, gap, w, _, _ = self.ballistic()
