@@ -14,7 +14,9 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "support/dem_bodies.hpp"
@@ -260,6 +262,56 @@ TEST(LubricationCoupling, AStiffApproachToAWallIsDampedWithoutReversal)
         EXPECT_NEAR(next.x(), (u.x() + slip * 0.3) / (1.0 + slip), 1e-14);
         u = next;
     }
+}
+
+/// The St 39 sphere (a = 1.5 mm, ρs 7800, 0.455 m/s, μ 0.03042) approaching the floor from the
+/// edge of the range (a/2) on eq. (13) with its film link and nothing else (no fluid, no
+/// weight), fluid step `dt`, positions by the trapezoidal rule (eq. (17)), until it touches: the
+/// momentum it lost, in units of 6πμa².
+double film_approach_on_eq13(double dt)
+{
+    const double a = 1.5e-3;
+    const double viscosity = 0.03042;
+    const double v0 = 0.455;
+    DemSettings settings = implicit_film();
+    settings.lubrication = {true, viscosity, 0.5 * a, 1e-3};
+    settings.lubrication.coupling = LubricationCoupling::implicit;
+    const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.02), {false, false, true});
+    std::vector<Particle<3>> bodies{test::ball<3>(Vec<3>(0.01, 0.01, 1.5 * a * (1.0 - 1e-12)),
+                                                  Vec<3>(0.0, 0.0, -v0), a, 7800.0)};
+    const double mass = bodies[0].mass();
+    CellList<3> cells(floor.origin, floor.length, 3.0 * a);
+    ContactHistory<3> history;
+    const std::vector<std::size_t> members{0};
+    while (bodies[0].centre.z() > a) {
+        const Vec<3> centre = bodies[0].centre;
+        const Vec<3> velocity = bodies[0].velocity;
+        test::step_dem<3>(bodies, floor, settings, dt, cells, history); // the links at level n
+        bodies[0].centre = centre; // the DEM only records them: eq. (13) moves the body
+        bodies[0].velocity = velocity;
+        const std::vector<RigidBalance<3>> balance{dry_balance<3>(velocity, mass, dt)};
+        const Vec<3> next = coupled_velocities<3>(bodies, members, balance)[0];
+        bodies[0].centre = centre + 0.5 * dt * (velocity + next);
+        bodies[0].velocity = next;
+    }
+    return mass * (v0 + bodies[0].velocity.z()) / (6.0 * std::numbers::pi * viscosity * a * a);
+}
+
+TEST(LubricationCoupling, OnEqThirteenTheFilmActsAtTheStepsStartingGap)
+{
+    // Eq. (13) takes the link's resistance at the gap the step starts with (level n), the
+    // smaller c of the step's two ends: through the film to the wall it takes less than the
+    // correction's integral J = 6.3144 (6πμa², Lubrication.AFilmPassage…), and tends to it as Δt
+    // shrinks. At the Gondret cases' step near the floor (1e-4 s) the share is printed.
+    const double exact = 6.3144;
+    const double fine = film_approach_on_eq13(1e-7);
+    const double coarse = film_approach_on_eq13(1e-4);
+    std::printf("film approach on eq. (13): J %.4f at dt 1e-7 s, %.4f at dt 1e-4 s (closed form "
+                "%.4f)\n",
+                fine, coarse, exact);
+    EXPECT_NEAR(fine, exact, 6e-3 * exact);
+    EXPECT_LT(coarse, fine);
+    EXPECT_GT(coarse, 0.0);
 }
 
 TEST(LubricationCoupling, AGroupSolvedTogetherKeepsItsMomentum)
