@@ -307,18 +307,28 @@ def film_restitution(stokes, e_dry, range_over_a, roughness_over_a):
 
 
 def film_restitution_of_run(run_dir, stokes):
-    """film_restitution() with the run's own e_dry, lubrication.range (in grid spacings, the
-    largest) and lubrication.roughness (in radii), at `stokes`; None without lubrication."""
+    """film_restitution() with the run's own e_dry (contact.restitution of the adaptive model),
+    lubrication.range (in grid spacings, the largest) and lubrication.roughness (in radii), at
+    `stokes`. None where the closed form is not the run's film: no lubrication, not a sphere
+    (3D), lubrication.resolved other than "range", the correction held in contact
+    (in_contact "saturated"), another collision model, a range beyond the radius or a
+    roughness beyond the range (where fddem adds no correction)."""
     case = io.read_case(run_dir)
     lubrication = case.get("lubrication", {})
-    if not lubrication.get("enabled", False):
+    contact = case.get("contact", {})
+    domain = case["domain"]
+    if (not lubrication.get("enabled", False) or len(domain["size"]) != 3
+            or lubrication.get("resolved", "range") != "range"
+            or lubrication.get("in_contact", "off") != "off"
+            or contact.get("model", "linear") != "adaptive" or not stokes > 0.0):
         return None
     radius = 0.5 * float(case["bodies"][0]["diameter"])
-    domain = case["domain"]
     spacing = max(float(L) / int(n) for L, n in zip(domain["size"], domain["cells"]))
-    return film_restitution(stokes, float(case.get("contact", {}).get("restitution", 1.0)),
-                            float(lubrication.get("range", 2.0)) * spacing / radius,
-                            float(lubrication.get("roughness", 0.001)))
+    x_range = float(lubrication.get("range", 2.0)) * spacing / radius
+    x_rough = float(lubrication.get("roughness", 0.001))
+    if not 0.0 < x_rough < x_range <= 1.0:
+        return None
+    return film_restitution(stokes, float(contact.get("restitution", 1.0)), x_range, x_rough)
 
 
 def restitution(run_dir):

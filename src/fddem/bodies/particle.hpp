@@ -72,7 +72,7 @@ struct ContactState {
     /// The body's gaps within the lubrication range at the step's start, for the implicit
     /// coupling (lubrication.coupling = "implicit"); empty otherwise.
     std::vector<LubricationLink<Dim>> lubrication_links;
-    /// touched something, or came within the margin (or opened a gap within the lubrication
+    /// touched something, or came within the margin (or left a collision within the lubrication
     /// range, lubrication.coupling "implicit") this step
     bool is_in_contact = false;
 };

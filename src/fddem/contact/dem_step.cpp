@@ -13,7 +13,7 @@ namespace fddem {
 namespace {
 
 /// Whether a body within the lubrication range counts as in contact (lubrication.coupling
-/// "dem"); with "implicit" only the margin does, and a gap opening within the range
+/// "dem"); with "implicit" only the margin does, and a gap leaving a collision within the range
 /// (ContactForces::mark_if_near).
 bool counts_range_as_contact(const LubricationSettings& lubrication)
 {
@@ -199,8 +199,8 @@ public:
 
     std::vector<Vec<Dim>> force;
     std::vector<AngularVec<Dim>> torque;
-    /// touched, came within the margin (or, lubrication.coupling "implicit", opened a gap within
-    /// the lubrication range) during the step
+    /// touched, came within the margin (or, lubrication.coupling "implicit", left a collision
+    /// within the lubrication range) during the step
     std::vector<char> has_contact;
     std::vector<char> touching; ///< overlaps a body or a wall at the state last evaluated
     int in_contact = 0;

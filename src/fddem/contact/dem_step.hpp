@@ -60,8 +60,9 @@ struct DemSettings {
     /// damping impulse of their relative normal and tangential surface velocities. With
     /// coupling "dem" they count as in contact (as within the margin: with the paper's coupling
     /// the DEM moves them, so the damping acts on the velocity the body keeps); with "implicit"
-    /// only those whose gap opens do (a body leaving a wall or another body), and each body's
-    /// gaps at the step's start are kept in contact.lubrication_links for eqs. (13)–(14). The
+    /// only those leaving a collision do (a gap opening within the range after a touch, until it
+    /// has left the range: ContactHistory::rebounds), and each body's gaps at the step's start
+    /// are kept in contact.lubrication_links for eqs. (13)–(14). The
     /// cell list must reach
     /// 2 r_max + max(margin, range).
     LubricationSettings lubrication{};
@@ -83,7 +84,8 @@ struct DemOutcome {
 /// settings.margin; what it reaches beyond is the skin of the sub-steps' neighbour list
 /// (contact/neighbour_list.hpp: none, and the list is rebuilt at every sub-step, if it reaches no
 /// further). `history` holds the tangential springs and per-contact constants of the open
-/// contacts, keyed by the bodies' ids; on return it holds those open at the end of the step.
+/// contacts and (lubrication.coupling "implicit") the collisions under way, keyed by the bodies'
+/// ids; on return it holds those of the end of the step.
 /// `dt` is the fluid step: the adaptive model stretches a collision to N_c dt.
 template <int Dim>
 DemOutcome advance_contacts(std::span<Particle<Dim>> bodies, const DemWalls<Dim>& walls,

@@ -522,18 +522,22 @@ TEST(Lubrication, AFilmPassageTakesTheImpulseOfTheIntegratedCorrection)
 {
     // F = c_corr(h) v and dh = v dt: the impulse over the passage is ∫ c_corr dh whatever the
     // speed, J = 6.31 (6πμa²) at range a/2 and roughness 1e-3 a (the film's own restitution,
-    // docs/method.md §5). The sub-steps apply c at the gap each ends with, a Riemann sum whose
-    // error is at most one sub-step's travel times c(h_σ) ≈ 1000 (6πμa): with Δt = 1e-7 s that
-    // is 6e-3 of J. At the Gondret cases' steps (1e-4 s near the floor, 8 sub-steps) the bound
-    // is about J itself; the measured J is printed.
+    // docs/method.md §5). The sub-steps apply c at the gap each ends with, and the one that
+    // crosses into the overlap none: a Riemann sum whose error is at most about one sub-step's
+    // travel times c(h_σ) ≈ 1000 (6πμa), i.e. (Δh/a) 1000 in units of 6πμa². With Δt = 1e-7 s
+    // that is 4e-3 (6e-4 of J; the test allows 6e-3 of J). At the Gondret cases' steps (1e-4 s
+    // near the floor, 8 sub-steps) the bound is 3.8, 0.6 J; the measured J is pinned, the one
+    // docs/method.md quotes.
     const double exact = film_passage_integral(0.5, 1e-3);
     EXPECT_NEAR(exact, 6.3144, 1e-4);
     const double fine = film_passage_in_the_dem(1e-7);
     EXPECT_NEAR(fine, exact, 6e-3 * exact);
     const double coarse = film_passage_in_the_dem(1e-4);
-    std::printf("film passage J: closed form %.4f, DEM at dt 1e-7 s %.4f, at dt 1e-4 s %.4f\n",
-                exact, fine, coarse);
-    EXPECT_NEAR(coarse, exact, exact); // the bound above
+    std::printf("film passage J: closed form %.4f, DEM at dt 1e-7 s %.4f, at dt 1e-4 s %.4f; at "
+                "dt 5e-5, 2.5e-5, 1e-5 s: %.4f %.4f %.4f\n",
+                exact, fine, coarse, film_passage_in_the_dem(5e-5), film_passage_in_the_dem(2.5e-5),
+                film_passage_in_the_dem(1e-5));
+    EXPECT_NEAR(coarse, 5.2549, 1e-3); // the number the docs quote (0.83 J), within the bound
 }
 
 TEST(Lubrication, ImplicitDampingIsStableWhenStiff)
