@@ -50,7 +50,7 @@ def main():
         return
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.5))
-    rebound.plot_restitution(ax, rows)
+    rebound.plot_restitution(ax, rows, film_run=args.runs[0] if args.runs else None)
     for r, run in zip(rows, args.runs):
         ax.annotate(os.path.basename(os.path.normpath(run)), (r["stokes"], r["ratio"]),
                     textcoords="offset points", xytext=(5, -12), fontsize=7)

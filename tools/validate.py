@@ -366,7 +366,7 @@ def plot_restitution_series(run_dir, axes):
         [gondret_name(case) for case in ("st27", "st152")]
     runs = [os.path.join(here, slug(n)) for n in names]
     results = [rebound.restitution(r) for r in runs if os.path.exists(os.path.join(r, "particles.csv"))]
-    rebound.plot_restitution(axes, results)
+    rebound.plot_restitution(axes, results, film_run=run_dir)
     axes.legend(fontsize=6, loc="upper left")
 
 

@@ -391,11 +391,16 @@ def gondret_restitution_points():
     return points
 
 
-def plot_restitution(axes, results, label="fddem, d/h = 8"):
+def plot_restitution(axes, results, label="fddem, d/h = 8", film_run=None):
     """e_eff/e_dry against St: `results` (restitution() dicts) over Legendre et al.'s fit and
-    Gondret et al.'s two trajectories measured the same way."""
+    Gondret et al.'s two trajectories measured the same way; with `film_run` (a run directory)
+    also what its lubrication film alone allows (film_restitution_of_run), as a dashed line."""
     st = np.logspace(0, 3.2, 200)
     axes.plot(st, np.exp(-LEGENDRE_BETA / st), "k-", label="Legendre et al. (2006): exp(−35/St)")
+    if film_run is not None and film_restitution_of_run(film_run, 100.0) is not None:
+        film = [film_restitution_of_run(film_run, x) for x in st]
+        axes.plot(st, film, "b--", lw=1,
+                  label="the lubrication film alone, exactly integrated (its range, roughness)")
     ref = gondret_restitution_points()
     axes.plot([p[0] for p in ref], [p[1] for p in ref], "ks", mfc="none",
               label="Gondret et al. (2002), trajectories measured as the runs")
