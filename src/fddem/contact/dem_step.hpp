@@ -62,8 +62,7 @@ struct DemSettings {
     /// the DEM moves them, so the damping acts on the velocity the body keeps); with "implicit"
     /// only those leaving a collision do (a gap opening within the range after a touch, until it
     /// has left the range: ContactHistory::rebounds), and each body's gaps at the step's start
-    /// are kept in contact.lubrication_links for eqs. (13)–(14). The
-    /// cell list must reach
+    /// are kept in contact.lubrication_links for eqs. (13)–(14). The cell list must reach
     /// 2 r_max + max(margin, range).
     LubricationSettings lubrication{};
 };

@@ -79,9 +79,9 @@ void report_derived_values(const CaseConfig& config, RunMonitor& monitor)
                   "moves keeps the last step's resolved fluid force while it touches nothing"
             : lubrication.is_implicit()
                 ? "fddem: contact.fluid_force auto -> none (lubrication implicit in eqs. "
-                  "(13)-(14)): the DEM moves a body in contact, within the margin or leaving "
-                  "within the lubrication range by its buoyant weight, the contact forces and "
-                  "the lubrication correction"
+                  "(13)-(14)): the DEM moves a body in contact, within the margin or leaving a "
+                  "collision within the lubrication range by its buoyant weight, the contact "
+                  "forces and the lubrication correction"
                 : "fddem: contact.fluid_force auto -> none (lubrication off): the DEM moves a "
                   "body in contact by its buoyant weight and the contact forces, as the "
                   "paper");
