@@ -137,11 +137,12 @@ public:
                                  walls_.velocity[axis][static_cast<std::size_t>(side)]);
     }
 
-    /// The lubrication impulses over one sub-step `step` at the bodies' current state, applied
-    /// pair by pair (in the neighbour list's order) to contact.velocity and contact.omega by a
-    /// backward-Euler damper, and added to the mean force and torque as impulse / `dt`. A
-    /// prescribed or fixed body keeps its velocity but gets the film's force in its mean and
-    /// lubrication force (what particles.csv reports), as it gets the resolved flow's.
+    /// The lubrication impulses over the coming drift of one sub-step `step` from the bodies'
+    /// current state, applied pair by pair (in the neighbour list's order) to contact.velocity
+    /// and contact.omega by a backward-Euler damper (damp), and added to the mean force and torque
+    /// as impulse / `dt`. A prescribed or fixed body keeps its velocity but gets the film's force
+    /// in its mean and lubrication force (what particles.csv reports), as it gets the resolved
+    /// flow's.
     void lubricate(std::span<Particle<Dim>> bodies, double step, double dt)
     {
         for (const auto& [i, j] : neighbours_.pairs()) {
@@ -161,7 +162,8 @@ public:
     }
 
     /// lubrication.coupling = "implicit": each body's gaps within the range at the current state
-    /// (the step's start), with their corrections, appended to contact.lubrication_links (both
+    /// (the step's start), with their corrections averaged over the gaps the start velocities would
+    /// cross in Δt, appended to contact.lubrication_links (both
     /// sides of a pair; only the free bodies moved by eqs. (13)–(14) read them).
     void link(std::span<Particle<Dim>> bodies) const
     {
@@ -170,9 +172,9 @@ public:
             const auto b = static_cast<std::size_t>(j);
             const ContactGeometry<Dim> g =
                 ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]), domain_);
-            const LubricationResistance c =
-                lubrication_correction<Dim>(-g.overlap, bodies[a].radius(), bodies[b].radius(),
-                                            lubrication_, shell_depths_[a] + shell_depths_[b]);
+            const LubricationResistance c = lubrication_correction_over<Dim>(
+                -g.overlap, -g.overlap - dt_ * g.overlap_rate, bodies[a].radius(),
+                bodies[b].radius(), lubrication_, shell_depths_[a] + shell_depths_[b]);
             if (c.normal == 0.0 && c.tangential == 0.0) {
                 continue;
             }
@@ -185,9 +187,9 @@ public:
         for (const auto& [body, d, side] : neighbours_.walls()) {
             const auto a = static_cast<std::size_t>(body);
             const ContactGeometry<Dim> g = wall_contact(bodies[a], d, side);
-            const LubricationResistance c = lubrication_correction<Dim>(
-                -g.overlap, bodies[a].radius(), std::numeric_limits<double>::infinity(),
-                lubrication_, shell_depths_[a]);
+            const LubricationResistance c = lubrication_correction_over<Dim>(
+                -g.overlap, -g.overlap - dt_ * g.overlap_rate, bodies[a].radius(),
+                std::numeric_limits<double>::infinity(), lubrication_, shell_depths_[a]);
             if (c.normal == 0.0 && c.tangential == 0.0) {
                 continue;
             }
@@ -293,18 +295,20 @@ private:
         }
     }
 
-    /// One pair's (`second` null: a wall's) lubrication impulse; `shell_gap` the sum of the
-    /// pair's outermost_shell_depth. The relative surface velocity
-    /// w at the contact point is damped by backward Euler, w ← w/(1 + c Δt_i K), K the pair's
-    /// inverse effective mass along the normal (1/m1 + 1/m2) or across it (plus a²/J of each):
-    /// exact for the linear damper the lubrication force is, whatever c Δt_i.
+    /// One pair's (`second` null: a wall's) lubrication impulse over the coming drift of Δt_i;
+    /// `shell_gap` the sum of the pair's outermost_shell_depth. The gap rate is damped by backward
+    /// Euler with the resistance averaged over the drift's travel (film_step): its impulse is
+    /// ∫ c_corr dh over the gap the drift then covers, exactly for a wall and to the drift's
+    /// curvature for a pair, whatever Δt_i; K is the pair's inverse effective mass along the
+    /// normal (1/m1 + 1/m2). The slip is damped the same way with the tangential resistance
+    /// averaged over that travel, K across the normal (plus a²/J of each).
     void damp(const ContactGeometry<Dim>& g, Particle<Dim>& first, Particle<Dim>* second,
               double second_radius, double shell_gap, double step, double dt)
     {
-        const LubricationResistance c = lubrication_correction<Dim>(
-            -g.overlap, first.radius(), second_radius, lubrication_, shell_gap);
-        if (c.normal == 0.0 && c.tangential == 0.0) {
-            return;
+        const double gap = -g.overlap;
+        const double gap_rate = -g.overlap_rate; // ḣ = v·n, < 0 approaching
+        if (gap >= lubrication_.range && gap + step * gap_rate >= lubrication_.range) {
+            return; // out of the range now and after the drift
         }
         const auto inverse = [](const Particle<Dim>* p, double value) {
             return p != nullptr && p->is_free() ? 1.0 / value : 0.0;
@@ -314,12 +318,15 @@ private:
         const double turn_sum =
             g.lever_first.squaredNorm() * inverse(&first, first.inertia()) +
             g.lever_second.squaredNorm() * inverse(second, second ? second->inertia() : 1.0);
-        // w = v·n (< 0 approaching) and the slip; the impulses on the second body.
-        const double normal_velocity = -g.overlap_rate;
-        const Vec<Dim> normal_impulse =
-            damping_impulse(normal_velocity, c.normal, mass_sum, step) * g.normal;
+        // The impulses on the second body, along the normal and the slip.
+        const FilmStep film = film_step<Dim>(gap, gap_rate, mass_sum, step, first.radius(),
+                                             second_radius, lubrication_, shell_gap);
+        if (film.normal_impulse == 0.0 && film.tangential == 0.0) {
+            return;
+        }
+        const Vec<Dim> normal_impulse = film.normal_impulse * g.normal;
         const Vec<Dim> slip_impulse =
-            damping_impulse(1.0, c.tangential, mass_sum + turn_sum, step) * g.slip_velocity;
+            damping_impulse(1.0, film.tangential, mass_sum + turn_sum, step) * g.slip_velocity;
         const Vec<Dim> on_second = normal_impulse + slip_impulse;
         const auto push = [&](Particle<Dim>& p, const Vec<Dim>& impulse, const Vec<Dim>& lever) {
             ContactState<Dim>& s = p.contact;
@@ -415,17 +422,20 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
             if (bodies[b].is_free()) {
                 kick(b);
             }
-            ContactState<Dim>& c = bodies[b].contact;
-            c.centre = drift<Dim>(c.centre, c.velocity, step);
+        }
+        if (settings.lubrication.is_enabled) {
+            // After the half-kick, on the velocity the drift then moves with: the film's
+            // impulse is its integral over the drift's travel (damp).
+            contacts.lubricate(bodies, step, dt);
+        }
+        for (Particle<Dim>& body : bodies) {
+            body.contact.centre = drift<Dim>(body.contact.centre, body.contact.velocity, step);
         }
         contacts.evaluate(bodies, cells, step, true, outcome);
         for (std::size_t b = 0; b < n; ++b) {
             if (bodies[b].is_free()) {
                 kick(b);
             }
-        }
-        if (settings.lubrication.is_enabled) {
-            contacts.lubricate(bodies, step, dt);
         }
     }
     for (std::size_t b = 0; b < n; ++b) {

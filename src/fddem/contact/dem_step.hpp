@@ -56,8 +56,9 @@ struct DemSettings {
     /// them, instead of the fluid update, which cannot see them close in [m]. 0: touching only.
     double margin = 0.0;
     /// Lubrication correction (contact/lubrication.hpp), off by default. When on, pairs and
-    /// walls closer than its range get, after each sub-step's second half-kick, a backward-Euler
-    /// damping impulse of their relative normal and tangential surface velocities. With
+    /// walls closer than its range get, after each sub-step's first half-kick, a backward-Euler
+    /// damping impulse of their relative normal and tangential surface velocities, with the
+    /// resistance averaged over the drift that follows (film_step). With
     /// coupling "dem" they count as in contact (as within the margin: with the paper's coupling
     /// the DEM moves them, so the damping acts on the velocity the body keeps); with "implicit"
     /// only those leaving a collision do (a gap opening within the range after a touch, until it

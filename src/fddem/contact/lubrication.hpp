@@ -112,6 +112,45 @@ template <int Dim>
 lubrication_correction(double gap, double radius, double other_radius,
                        const LubricationSettings& settings, double shell_gap = 0.0);
 
+/// The correction's integral over the gap, G(h) = ∫_0^h c_corr(s) ds [N·s/m · m = N·s] (2D: per
+/// unit length), normal and tangential, with the same arguments as lubrication_correction: its
+/// impulse on a gap that moves from h0 to h1 is G(h0) − G(h1) along the approach, whatever the
+/// speed on the way (F = −c_corr(h) ḣ). In closed form from the leading terms above (each is a
+/// power of h or a logarithm); G is continuous, constant beyond h_Δ, linear below h_σ and, in
+/// contact, linear with the held value (`saturated`) or flat (`off`).
+template <int Dim>
+[[nodiscard]] LubricationResistance
+lubrication_correction_integral(double gap, double radius, double other_radius,
+                                const LubricationSettings& settings, double shell_gap = 0.0);
+
+/// The mean of c_corr over the gaps from `from` to `to`, [G(to) − G(from)]/(to − from) (Simpson's
+/// rule over a travel below 1 % of the gap within one smooth piece, where G's two values agree
+/// in most of their digits); c_corr(from) if they are equal.
+template <int Dim>
+[[nodiscard]] LubricationResistance
+lubrication_correction_over(double from, double to, double radius, double other_radius,
+                            const LubricationSettings& settings, double shell_gap = 0.0);
+
+/// One gap's film over a (sub-)step `step` in which it moves at its damped rate: the new gap
+/// rate ḣ1 solves ḣ1 = ḣ0 − K [G(h0 + step ḣ1) − G(h0)] (`inverse_mass` K: 1/m1 + 1/m2 along the
+/// normal), i.e. backward Euler with the resistance averaged over the step's travel,
+/// c̄ = [G(h1) − G(h0)]/(h1 − h0), h1 = h0 + step ḣ1. Its impulse is then exactly ∫ c_corr dh over
+/// the travel the body makes with that rate, at any step: no under-integration as the gap
+/// closes, and the passage through the roughness length into contact counted (docs/method.md §5,
+/// "The film's own restitution"). The left side grows monotonically with ḣ1 (its slope is
+/// 1 + K step c_corr ≥ 1), so the root is unique, lies between 0 and ḣ0 and keeps ḣ0's sign
+/// (never reversed, for any stiffness): found by Newton's method kept inside that bracket.
+struct FilmStep {
+    double gap_rate = 0.0;       ///< ḣ1 [m/s]
+    double normal_impulse = 0.0; ///< on the second body along n: G(h0) − G(h1) [N·s]
+    double tangential = 0.0;     ///< c̄_t over the same travel (c_t(h0) if the gap stays) [N·s/m]
+};
+
+template <int Dim>
+[[nodiscard]] FilmStep film_step(double gap, double gap_rate, double inverse_mass, double step,
+                                 double radius, double other_radius,
+                                 const LubricationSettings& settings, double shell_gap = 0.0);
+
 /// Backward-Euler update of a relative velocity w under a linear damper c over Δt_i, with
 /// `inverse_mass` the sum of the bodies' inverse (effective) masses: w / (1 + c Δt_i/m*).
 /// Unconditionally stable: it shrinks |w| and never reverses it, for any c Δt_i.

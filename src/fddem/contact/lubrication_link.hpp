@@ -22,7 +22,10 @@ struct LubricationLink {
     Vec<Dim> lever = Vec<Dim>::Zero();         ///< from this body's centre to the gap [m]
     Vec<Dim> partner_lever = Vec<Dim>::Zero(); ///< from the partner's centre to the gap [m]
     Vec<Dim> wall_velocity = Vec<Dim>::Zero(); ///< the wall's velocity (a wall's gap) [m/s]
-    LubricationResistance resistance;          ///< c_corr at the step's start gap
+    /// c_corr averaged over the gaps from the step's start to where the start velocities would
+    /// take it in Δt (lubrication_correction_over): the body slows, so the mean leans to the
+    /// nearer gaps as the damping on U^{n+1} needs to take the film's integral over the step
+    LubricationResistance resistance;
 };
 
 } // namespace fddem
