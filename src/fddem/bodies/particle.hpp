@@ -69,8 +69,9 @@ struct ContactState {
     /// The lubrication part of mean_force and mean_torque (outputs show the two apart).
     Vec<Dim> lubrication_force = Vec<Dim>::Zero();
     AngularVec<Dim> lubrication_torque = zero_angular<Dim>(); ///< [N·m]
-    /// The body's gaps within the lubrication range at the step's start, for the implicit
-    /// coupling (lubrication.coupling = "implicit"); empty otherwise.
+    /// The body's gaps within the lubrication range at the step's start, or carried into it by
+    /// the start velocities within the step, with the correction averaged over that travel, for
+    /// the implicit coupling (lubrication.coupling = "implicit"); empty otherwise.
     std::vector<LubricationLink<Dim>> lubrication_links;
     /// touched something, or came within the margin (or left a collision within the lubrication
     /// range, lubrication.coupling "implicit") this step

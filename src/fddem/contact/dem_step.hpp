@@ -63,8 +63,10 @@ struct DemSettings {
     /// the DEM moves them, so the damping acts on the velocity the body keeps); with "implicit"
     /// only those leaving a collision do (a gap opening within the range after a touch, until it
     /// has left the range: ContactHistory::rebounds), and each body's gaps at the step's start
-    /// are kept in contact.lubrication_links for eqs. (13)–(14). The cell list must reach
-    /// 2 r_max + max(margin, range).
+    /// (within the range, or carried into it by the start velocities) are kept in
+    /// contact.lubrication_links for eqs. (13)–(14). The cell list must reach 2 r_max +
+    /// max(margin, range); a pair it does not hold at a sub-step's start that the drift brings
+    /// into the range gets no film for that drift (a loss below c_corr's vanishing tail at h_Δ).
     LubricationSettings lubrication{};
 };
 

@@ -150,15 +150,22 @@ LubricationResistance lubrication_correction(double gap, double radius, double o
             std::max(0.0, near.tangential - resolved.tangential)};
 }
 
+namespace {
+
+/// ∫ c_corr over [from, to] (either order), piece by piece: the overlap (0 or the held value),
+/// (0, h_σ] (the held value), (h_σ, h_Δ) (the antiderivative's difference over that piece
+/// alone, so that no large constant of another piece enters the difference), beyond h_Δ (0).
 template <int Dim>
-LubricationResistance
-lubrication_correction_integral(double gap, double radius, double other_radius,
-                                const LubricationSettings& settings, double shell_gap)
+LubricationResistance correction_between(double from, double to, double radius, double other_radius,
+                                         const LubricationSettings& settings, double shell_gap)
 {
     const double roughness = settings.roughness * std::min(radius, other_radius);
-    if (!settings.is_enabled || roughness >= settings.range) {
+    if (!settings.is_enabled || roughness >= settings.range || from == to) {
         return {};
     }
+    const double sign = to > from ? 1.0 : -1.0;
+    const double lo = std::min(from, to);
+    const double hi = std::max(from, to);
     const bool has_shells = settings.resolved == LubricationResolved::shells;
     const auto c = [&](double h) {
         return lubrication_resistance<Dim>(h, radius, other_radius, settings.viscosity);
@@ -174,15 +181,28 @@ lubrication_correction_integral(double gap, double radius, double other_radius,
     };
     const LubricationResistance k = p(settings.range);
     const LubricationResistance held = p(roughness) - k; // c_corr on (0, h_σ]
-    if (gap <= 0.0) {
-        return settings.in_contact == LubricationInContact::saturated ? gap * held
-                                                                      : LubricationResistance{};
+    const auto length = [&](double a, double b) {
+        return std::max(0.0, std::min(hi, b) - std::max(lo, a));
+    };
+    LubricationResistance sum =
+        length(0.0, roughness) * held +
+        (settings.in_contact == LubricationInContact::saturated ? length(lo, 0.0) : 0.0) * held;
+    const double film_lo = std::max(lo, roughness);
+    const double film_hi = std::min(hi, settings.range);
+    if (film_hi > film_lo) {
+        sum = sum + (big_p(film_hi) - big_p(film_lo)) - (film_hi - film_lo) * k;
     }
-    if (gap <= roughness) {
-        return gap * held;
-    }
-    const double h = std::min(gap, settings.range);
-    return roughness * held + (big_p(h) - big_p(roughness)) - (h - roughness) * k;
+    return sign * sum;
+}
+
+} // namespace
+
+template <int Dim>
+LubricationResistance
+lubrication_correction_integral(double gap, double radius, double other_radius,
+                                const LubricationSettings& settings, double shell_gap)
+{
+    return correction_between<Dim>(0.0, gap, radius, other_radius, settings, shell_gap);
 }
 
 template <int Dim>
@@ -200,11 +220,8 @@ lubrication_correction_over(double from, double to, double radius, double other_
     const auto crosses = [&](double joint) { return (from - joint) * (to - joint) <= 0.0; };
     if (std::abs(to - from) > 1e-2 * std::max(std::abs(from), roughness) || crosses(0.0) ||
         crosses(roughness) || crosses(settings.range)) {
-        const auto integral = [&](double h) {
-            return lubrication_correction_integral<Dim>(h, radius, other_radius, settings,
-                                                        shell_gap);
-        };
-        return (1.0 / (to - from)) * (integral(to) - integral(from));
+        return (1.0 / (to - from)) *
+               correction_between<Dim>(from, to, radius, other_radius, settings, shell_gap);
     }
     // A travel below 1 % of the gap, over which c_corr is smooth: G's two values would agree
     // in most of their digits, Simpson's rule is within 1e-9 of the mean.
@@ -234,19 +251,20 @@ FilmStep film_step(double gap, double gap_rate, double inverse_mass, double step
         for (int iteration = 0; iteration < 200; ++iteration) {
             const double end = gap + step * rate;
             const double residual = rate - gap_rate + inverse_mass * between(rate).normal;
-            if (residual == 0.0) {
+            if (std::abs(residual) <= 1e-13 * std::abs(gap_rate)) {
                 break;
             }
             (residual > 0.0 ? hi : lo) = rate;
+            // Newton's step, or bisection where it leaves the bracket (at a joint of c_corr:
+            // its slope is one-sided there, and the root may lie on the other side).
             double next = rate - residual / (1.0 + inverse_mass * step * resistance(end).normal);
             if (!(next > lo && next < hi)) {
                 next = 0.5 * (lo + hi);
             }
-            const bool is_done = std::abs(next - rate) <= 1e-15 * std::abs(next);
-            rate = next;
-            if (is_done || hi - lo <= 1e-16 * std::abs(gap_rate)) {
-                break;
+            if (next == lo || next == hi) {
+                break; // the bracket is two neighbouring doubles: `rate` is the root
             }
+            rate = next;
         }
     }
     const double travel = step * rate;

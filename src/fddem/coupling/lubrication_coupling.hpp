@@ -3,8 +3,9 @@
 /// The lubrication correction inside eqs. (13)–(14) (lubrication.coupling = "implicit"; issue 16,
 /// docs/method.md §5, "Implicit coupling"). fddem's, beyond the paper.
 ///
-/// A gap j of body i (a LubricationLink, fixed at the step's start) exerts the linear damping
-/// force of contact/lubrication.hpp on the relative surface velocity at the gap:
+/// A gap j of body i (a LubricationLink, fixed at the step's start, its resistance the
+/// correction averaged over the travel of the start velocities) exerts the linear damping force
+/// of contact/lubrication.hpp on the relative surface velocity at the gap:
 ///   F_j = −C_j (U_i + ω_i × l_j − S_j),   C_j = c_n n nᵀ + c_t (1 − n nᵀ),
 ///   M_j = l_j × F_j,
 /// with l_j the lever from i's centre to the gap, n the unit normal toward the partner and S_j

@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <string>
 
 #include "support/dem_bodies.hpp"
 
@@ -214,12 +215,13 @@ TEST(Lubrication, ShellsModelRestoresBrennerWhereTheGridSeesTheGapWidened)
 }
 
 template <int Dim>
-void check_integral(double other, LubricationResolved resolved, LubricationInContact in_contact)
+void check_integral(double a, double other, LubricationResolved resolved,
+                    LubricationInContact in_contact)
 {
     // G(h) = ∫_0^h c_corr: its central difference is c_corr at gaps in contact, below the
     // roughness, through the film and beyond the range (to 1e-6 relative: the difference's
-    // truncation and round-off), and it is continuous where its pieces meet.
-    const double a = 0.01;
+    // truncation and round-off), and it is continuous where its pieces meet. With a = 1.5 mm
+    // the range (2 mm) reaches beyond ā, where the sphere forms' log terms are clamped at 0.
     LubricationSettings s{true, 0.7, 0.002, 1e-3, in_contact, resolved};
     const double shell_gap = resolved == LubricationResolved::shells ? 0.4e-3 : 0.0;
     const auto big_g = [&](double h) {
@@ -252,47 +254,87 @@ TEST(Lubrication, TheCorrectionsIntegralHasItAsItsDerivative)
     for (const auto resolved : {LubricationResolved::range, LubricationResolved::shells}) {
         for (const auto in_contact : {LubricationInContact::off, LubricationInContact::saturated}) {
             for (const double other : {wall, 0.01, 0.005}) {
-                check_integral<2>(other, resolved, in_contact);
-                check_integral<3>(other, resolved, in_contact);
+                check_integral<2>(0.01, other, resolved, in_contact);
+                check_integral<3>(0.01, other, resolved, in_contact);
+            }
+            check_integral<3>(0.0015, wall, resolved, in_contact);
+            check_integral<3>(0.0015, 0.0015, resolved, in_contact);
+        }
+    }
+}
+
+template <int Dim>
+void check_film_step(double other, LubricationResolved resolved, LubricationInContact in_contact)
+{
+    const double a = 1.5e-3;
+    LubricationSettings s{true, 0.03, 0.5 * a, 1e-3, in_contact, resolved};
+    const double shell_gap = resolved == LubricationResolved::shells ? 0.1 * a : 0.0;
+    const auto big_g = [&](double h) {
+        return lubrication_correction_integral<Dim>(h, a, other, s, shell_gap);
+    };
+    for (const double inverse_mass : {0.0, 1.0, 1e3, 1e6, 1e9}) {
+        for (const double rate : {-0.5, -1e-3, 0.2}) {
+            for (const double gap : {-1e-6, 1e-6, 2e-5, 3e-4, 0.74e-3}) {
+                const double step = 1e-4;
+                const FilmStep f =
+                    film_step<Dim>(gap, rate, inverse_mass, step, a, other, s, shell_gap);
+                const double end = gap + step * f.gap_rate;
+                const std::string where = std::to_string(Dim) + "D, K " +
+                                          std::to_string(inverse_mass) + ", rate " +
+                                          std::to_string(rate) + ", gap " + std::to_string(gap);
+                // G's values share most of their digits over a short travel, and where the
+                // film is stiff G(h1) moves by c Δt per unit of the rate's own round-off: the
+                // bound is those two (c at most its held value c(h_σ)).
+                const LubricationResistance taken{big_g(end).normal - big_g(gap).normal,
+                                                  big_g(end).tangential - big_g(gap).tangential};
+                const LubricationResistance held =
+                    lubrication_correction<Dim>(1e-3 * std::min(a, other), a, other, s, shell_gap);
+                const double rounding = 1e-14 * step * std::abs(f.gap_rate);
+                EXPECT_NEAR(f.normal_impulse, -taken.normal,
+                            1e-9 * std::abs(f.normal_impulse) +
+                                1e-14 * std::abs(big_g(gap).normal) + held.normal * rounding)
+                    << where;
+                if (end != gap) { // the slip's resistance: the mean over the same travel
+                    EXPECT_NEAR(f.tangential * (end - gap), taken.tangential,
+                                1e-9 * std::abs(taken.tangential) +
+                                    1e-14 * std::abs(big_g(gap).tangential) +
+                                    held.tangential * rounding)
+                        << where;
+                }
+                EXPECT_NEAR(f.gap_rate, rate + inverse_mass * f.normal_impulse,
+                            1e-12 * std::abs(rate))
+                    << where;
+                EXPECT_GE(f.gap_rate * rate, 0.0) << "reversed: " << where;
+                EXPECT_LE(std::abs(f.gap_rate), std::abs(rate)) << where;
+                if (inverse_mass == 0.0) {
+                    EXPECT_EQ(f.gap_rate, rate) << where;
+                }
             }
         }
+    }
+    // Stiff (c(h_σ) Δt K ≈ 1e8 for the sphere at the wall): the gap stops short of contact,
+    // above the roughness length.
+    if (std::isinf(other) && resolved == LubricationResolved::range) {
+        const FilmStep stiff = film_step<Dim>(2e-5, -0.5, 1e9, 1e-4, a, other, s);
+        EXPECT_GT(2e-5 + 1e-4 * stiff.gap_rate, 1e-3 * a) << Dim << "D";
     }
 }
 
 TEST(Lubrication, AFilmStepTakesTheIntegralOverItsTravel)
 {
     // film_step: the new gap rate solves ḣ1 = ḣ0 − K [G(h0 + Δt ḣ1) − G(h0)] to round-off, its
-    // impulse is G(h0) − G(h1), the rate keeps its sign at any stiffness, and a body of
-    // infinite mass (K = 0) keeps its rate and feels the integral over its own travel.
-    const double a = 1.5e-3;
-    const LubricationSettings s{true, 0.03, 0.5 * a, 1e-3};
-    const auto big_g = [&](double h) {
-        return lubrication_correction_integral<3>(h, a, wall, s).normal;
-    };
-    for (const double inverse_mass : {0.0, 1.0, 1e3, 1e6, 1e9}) {
-        for (const double rate : {-0.5, -1e-3, 0.2}) {
-            for (const double gap : {-1e-6, 1e-6, 2e-5, 3e-4}) {
-                const double step = 1e-4;
-                const FilmStep f = film_step<3>(gap, rate, inverse_mass, step, a, wall, s);
-                const double end = gap + step * f.gap_rate;
-                // G's values share most of their digits over a short travel: the bound is
-                // the round-off of the difference.
-                EXPECT_NEAR(f.normal_impulse, big_g(gap) - big_g(end),
-                            1e-9 * std::abs(f.normal_impulse) + 1e-15 * std::abs(big_g(gap)))
-                    << "K " << inverse_mass << ", rate " << rate << ", gap " << gap;
-                EXPECT_NEAR(f.gap_rate, rate + inverse_mass * f.normal_impulse,
-                            1e-12 * std::abs(rate));
-                EXPECT_GE(f.gap_rate * rate, 0.0) << "reversed: K " << inverse_mass;
-                EXPECT_LE(std::abs(f.gap_rate), std::abs(rate));
-                if (inverse_mass == 0.0) {
-                    EXPECT_EQ(f.gap_rate, rate);
-                }
+    // impulse is G(h0) − G(h1) and the slip's resistance the mean over the same travel, the
+    // rate keeps its sign at any stiffness, and a body of infinite mass (K = 0) keeps its rate
+    // and feels the integral over its own travel: disks and spheres, a wall and a pair, both
+    // `resolved` rules, both `in_contact` rules.
+    for (const auto resolved : {LubricationResolved::range, LubricationResolved::shells}) {
+        for (const auto in_contact : {LubricationInContact::off, LubricationInContact::saturated}) {
+            for (const double other : {wall, 1.5e-3, 0.75e-3}) {
+                check_film_step<2>(other, resolved, in_contact);
+                check_film_step<3>(other, resolved, in_contact);
             }
         }
     }
-    // The film's stiffness at c(h_σ) Δt K ≈ 1e8: the gap still stops short of contact.
-    const FilmStep stiff = film_step<3>(2e-5, -0.5, 1e9, 1e-4, a, wall, s);
-    EXPECT_GT(2e-5 + 1e-4 * stiff.gap_rate, 0.0);
 }
 
 TEST(Lubrication, DefaultIsOffAndNoneInContact)
@@ -456,7 +498,7 @@ TEST(Lubrication, DryAndLubricationForcesAreReportedApart)
 /// the floor at v0 = 0.55 m/s, under the adaptive model (e_dry, N_c = 1000 steps of Δt =
 /// 1.3 µs, one sub-step each: T_c = 1.3 ms) with the lubrication correction on (range 0.75 mm,
 /// roughness 1e-3 a) in a fluid of viscosity μ. It starts 1 nm above the floor (inside the
-/// first sub-step's travel, so the film acts on the way in for none of it), and the exit speed
+/// first sub-step's travel, so the film acts on the way in over that 1 nm only), and the exit speed
 /// is the one at the end of the first step after which the ball is apart again. 0 if it never
 /// leaves within 5 T_c.
 template <int Dim>

@@ -278,6 +278,35 @@ RigidBalance<Dim> dry_balance(const Vec<Dim>& velocity_n, double mass, double dt
     return rigid_balance<Dim>(in, {}, {}, {}, {});
 }
 
+TEST(LubricationCoupling, AGapTheStepCarriesIntoTheRangeIsLinked)
+{
+    // A sphere 2.5 mm above the floor (range 2 mm) falling at 1 m/s, Δt = 1 ms: its start
+    // velocity carries it 1 mm down, half of that inside the range, so it has a link with the
+    // correction's integral over that travel divided by the travel (the part beyond the range
+    // counting 0). Rising at the same speed, it has none.
+    const double a = 0.01;
+    const double dt = 1e-3;
+    const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
+    const DemSettings settings = implicit_film();
+    const auto links_of = [&](double w) {
+        std::vector<Particle<3>> bodies{
+            test::ball<3>(Vec<3>(0.05, 0.05, a + 2.5e-3), Vec<3>(0.0, 0.0, w), a, 2000.0)};
+        CellList<3> cells(floor.origin, floor.length, 0.03);
+        ContactHistory<3> history;
+        test::step_dem<3>(bodies, floor, settings, dt, cells, history);
+        return bodies[0].contact.lubrication_links;
+    };
+    const std::vector<LubricationLink<3>> falling = links_of(-1.0);
+    ASSERT_EQ(falling.size(), 1U);
+    const double wall = std::numeric_limits<double>::infinity();
+    const double integral =
+        lubrication_correction_integral<3>(2.5e-3, a, wall, settings.lubrication).normal -
+        lubrication_correction_integral<3>(1.5e-3, a, wall, settings.lubrication).normal;
+    EXPECT_GT(integral, 0.0);
+    EXPECT_NEAR(falling[0].resistance.normal, integral / 1e-3, 1e-9 * integral / 1e-3);
+    EXPECT_TRUE(links_of(1.0).empty());
+}
+
 TEST(LubricationCoupling, AStiffApproachToAWallIsDampedWithoutReversal)
 {
     // c Δt / m = 1e4: an explicit damping force would reverse the velocity and multiply it by
