@@ -67,6 +67,11 @@ struct DemSettings {
     /// contact.lubrication_links for eqs. (13)–(14). The cell list must reach 2 r_max +
     /// max(margin, range); a pair it does not hold at a sub-step's start that the drift brings
     /// into the range gets no film for that drift (a loss below c_corr's vanishing tail at h_Δ).
+    /// The travel is predicted along the normal, h0 + Δt_i ḣ: a pair sliding past each other
+    /// whose prediction dips into the range while its path stays out gets the film of that
+    /// prediction, again from c_corr's tail at h_Δ (the path's departure from the straight line
+    /// is (v_t Δt_i)²/(4 ā), far below h_Δ at the steps' Courant numbers), and with "dem" it is
+    /// not counted as in contact for it.
     LubricationSettings lubrication{};
 };
 
