@@ -54,10 +54,11 @@ def main():
     for r, run in zip(rows, args.runs):
         ax.annotate(os.path.basename(os.path.normpath(run)), (r["stokes"], r["ratio"]),
                     textcoords="offset points", xytext=(5, -12), fontsize=7)
-    ax.legend(loc="upper left", fontsize=8)
+    # Below the axes: inside, it covers points wherever the curves and the runs lie.
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.18), ncol=2, fontsize=8)
     ax.set_title("Sphere–wall rebound in a viscous fluid: effective restitution against St")
     fig.tight_layout()
-    fig.savefig(args.output, dpi=120)
+    fig.savefig(args.output, dpi=120, bbox_inches="tight")
     print(f"wrote {args.output}")
 
 

@@ -367,7 +367,8 @@ def plot_restitution_series(run_dir, axes):
     runs = [os.path.join(here, slug(n)) for n in names]
     results = [rebound.restitution(r) for r in runs if os.path.exists(os.path.join(r, "particles.csv"))]
     rebound.plot_restitution(axes, results, film_run=run_dir)
-    axes.legend(fontsize=6, loc="upper left")
+    # Below the axes: inside, it covers points wherever the curves and the runs lie.
+    axes.legend(fontsize=6, loc="upper center", bbox_to_anchor=(0.5, -0.22))
 
 
 def restitution_check(stokes, viscosity, end):
@@ -636,7 +637,8 @@ def main():
         panels[0].set_title(textwrap.fill(check.name, 70), fontsize=9)  # long names: two lines
         for axes in panels:
             axes.grid(alpha=0.3)
-            if check.panels == 1:  # a check that draws several panels places its own legends
+            # a check that draws several panels, or places its legend, keeps its own
+            if check.panels == 1 and axes.get_legend() is None:
                 axes.legend(fontsize=7)
         fig.tight_layout()
         png = slug(check.name) + ".png"
