@@ -637,8 +637,12 @@ def main():
         panels[0].set_title(textwrap.fill(check.name, 70), fontsize=9)  # long names: two lines
         for axes in panels:
             axes.grid(alpha=0.3)
-            # a check that draws several panels, or places its legend, keeps its own
-            if check.panels == 1 and axes.get_legend() is None:
+            # A check that draws several panels places its own legends, and so does one that
+            # anchors its legend outside the axes (bbox_to_anchor); any other gets one here.
+            legend = axes.get_legend()
+            is_outside = legend is not None and \
+                legend.get_bbox_to_anchor().bounds != axes.bbox.bounds
+            if check.panels == 1 and not is_outside:
                 axes.legend(fontsize=7)
         fig.tight_layout()
         png = slug(check.name) + ".png"
