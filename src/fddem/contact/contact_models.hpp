@@ -38,8 +38,10 @@ enum class ContactCoupling { paper, additive };
 /// torque of the step before, held constant over the sub-steps in which the body touches
 /// nothing, as resolved codes hold the fluid force over their collision sub-steps); automatic:
 /// held with the lubrication correction on and coupled through the DEM (lubrication.coupling
-/// "dem"), none otherwise (held_fluid_force_applies()).
-enum class ContactFluidForce { automatic, none, held };
+/// "dem"), none otherwise (held_fluid_force_applies()); always: held, also over the sub-steps in
+/// which the body touches (an enduring contact: two spheres that touch while they settle keep
+/// their drag; docs/method.md §5, "A fluid force in an enduring contact").
+enum class ContactFluidForce { automatic, none, held, always };
 
 /// Whether the sub-steps hold the resolved fluid force: contact.fluid_force = "held", or "auto"
 /// with `is_lubrication_through_dem` (lubrication.enabled with coupling "dem"). Then the paper
@@ -51,8 +53,15 @@ enum class ContactFluidForce { automatic, none, held };
 [[nodiscard]] constexpr bool held_fluid_force_applies(ContactFluidForce choice,
                                                       bool is_lubrication_through_dem)
 {
-    return choice == ContactFluidForce::held ||
+    return choice == ContactFluidForce::held || choice == ContactFluidForce::always ||
            (choice == ContactFluidForce::automatic && is_lubrication_through_dem);
+}
+
+/// Whether the held fluid force acts also while the body touches (contact.fluid_force =
+/// "always"); otherwise the contact model alone acts during a contact.
+[[nodiscard]] constexpr bool held_fluid_force_acts_in_contact(ContactFluidForce choice)
+{
+    return choice == ContactFluidForce::always;
 }
 
 struct ContactModelEntry {

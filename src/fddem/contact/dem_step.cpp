@@ -404,10 +404,12 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
         ContactState<Dim>& c = bodies[b].contact;
         c.mean_force += 0.5 * weight * contacts.force[b];
         c.mean_torque += 0.5 * weight * contacts.torque[b];
-        // The held fluid force (contact.fluid_force) acts only while the body touches nothing:
+        // The held fluid force (contact.fluid_force) acts while the body touches nothing:
         // during a contact the contact model alone acts (Kempe & Fröhlich 2012 neglect the
-        // fluid force in contact, as Biegert et al. 2017 report; docs/method.md §5).
-        const bool is_touching = contacts.touching[b] != 0;
+        // fluid force in contact, as Biegert et al. 2017 report; docs/method.md §5), unless
+        // contact.fluid_force = "always" (an enduring contact keeps the fluid's drag).
+        const bool is_touching =
+            contacts.touching[b] != 0 && !settings.is_fluid_force_held_in_contact;
         const Vec<Dim> fluid = is_touching ? Vec<Dim>::Zero() : c.held_fluid_force;
         const AngularVec<Dim> fluid_torque =
             is_touching ? zero_angular<Dim>() : c.held_fluid_torque;

@@ -73,6 +73,9 @@ struct DemSettings {
     /// is (v_t Δt_i)²/(4 ā), far below h_Δ at the steps' Courant numbers), and with "dem" it is
     /// not counted as in contact for it.
     LubricationSettings lubrication{};
+    /// The held fluid force (ContactState::held_fluid_force) acts also in the sub-steps in which
+    /// the body touches (contact.fluid_force = "always"); otherwise only while it touches nothing.
+    bool is_fluid_force_held_in_contact = false;
 };
 
 /// What the contacts did over the step, beyond what each body's record holds.

@@ -151,17 +151,11 @@ template <int Dim>
                                  double radius, double other_radius,
                                  const LubricationSettings& settings, double shell_gap = 0.0);
 
-/// Backward-Euler update of a relative velocity w under a linear damper c over Δt_i, with
-/// `inverse_mass` the sum of the bodies' inverse (effective) masses: w / (1 + c Δt_i/m*).
-/// Unconditionally stable: it shrinks |w| and never reverses it, for any c Δt_i.
-[[nodiscard]] inline double damped_relative_velocity(double velocity, double resistance,
-                                                     double inverse_mass, double step)
-{
-    return velocity / (1.0 + resistance * step * inverse_mass);
-}
-
-/// The impulse of that update on the pair's second body along w [N·s]: the change of w over
-/// the inverse mass, −c Δt_i w / (1 + c Δt_i/m*), written so that it holds for bodies of
+/// The impulse on the pair's second body along w [N·s] of the backward-Euler update of a
+/// relative velocity w under a linear damper c over Δt_i, w / (1 + c Δt_i/m*), with
+/// `inverse_mass` the sum of the bodies' inverse (effective) masses (unconditionally stable: it
+/// shrinks |w| and never reverses it): the change of w over the inverse mass,
+/// −c Δt_i w / (1 + c Δt_i/m*), written so that it holds for bodies of
 /// infinite mass too (inverse_mass = 0: both prescribed, fixed or a wall; then −c w Δt_i, the
 /// force the film exerts at the kept velocity).
 [[nodiscard]] inline double damping_impulse(double velocity, double resistance, double inverse_mass,

@@ -105,7 +105,7 @@ constexpr auto case_names(ContactFluidForce /*tag*/)
 {
     using enum ContactFluidForce;
     return std::to_array<EnumName<ContactFluidForce>>(
-        {{automatic, "auto"}, {none, "none"}, {held, "held"}});
+        {{automatic, "auto"}, {none, "none"}, {held, "held"}, {always, "always"}});
 }
 constexpr auto case_names(LubricationInContact /*tag*/)
 {

@@ -550,7 +550,10 @@ std::vector<KeySpec> case_schema()
                           "in which it touches nothing) or auto: held when lubrication.enabled "
                           "with lubrication.coupling = \"dem\" (a body within the lubrication "
                           "range of a wall would otherwise fall beside it at its buoyant weight "
-                          "alone), none otherwise, as the paper (docs/method.md §5, Coupling)."),
+                          "alone), none otherwise, as the paper (docs/method.md §5, Coupling); "
+                          "always: held, also over the sub-steps in which the body touches (an "
+                          "enduring contact: two spheres touching as they settle keep their drag; "
+                          "§5, \"A fluid force in an enduring contact\")."),
                       &CaseConfig::contact, &ContactConfig::fluid_force));
     s.push_back(bound(positive(key("contact", "stiffness", T::real, "N/m", "none",
                                    "Linear: spring stiffness k (2D: per unit depth); or give "

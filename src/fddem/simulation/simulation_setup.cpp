@@ -204,7 +204,8 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
         lub.coupling};
     const double reach = std::max(contact.margin, lubrication.is_enabled ? lubrication.range : 0.0);
     return ContactSetup<Dim>{DemSettings{std::move(*model), contact.velocity_damping,
-                                         std::max(1, substeps), contact.margin, lubrication},
+                                         std::max(1, substeps), contact.margin, lubrication,
+                                         held_fluid_force_acts_in_contact(contact.fluid_force)},
                              contact.coupling == ContactCoupling::paper,
                              CellList<Dim>(grid.domain(), largest + reach + 0.5 * smallest), walls};
 }

@@ -126,6 +126,38 @@ TEST(DemStep, HeldFluidForceActsWhileApartAndNotWhileTouching)
     EXPECT_EQ((touching(held) - touching(Vec<2>::Zero())).norm(), 0.0);
 }
 
+TEST(DemStep, HeldFluidForceActsInContactWhenAlways)
+{
+    // contact.fluid_force = "always" (docs/method.md §5, "A fluid force in an enduring
+    // contact"): the held force acts also while the body touches. Two disks that touch through
+    // the whole step: the contact forces are equal and opposite, so the pair's momentum changes
+    // by exactly the sum of the forces outside the contact over Δt, with the held forces under
+    // "always" and without them (the buoyant weights only) under "held".
+    const double dt = 2e-5; // a twelfth of the collision: the pair touches throughout
+    const auto momentum_change = [&](bool is_held_in_contact) {
+        std::vector<Particle<2>> bodies{disk(Vec<2>(1.0, 3.0), Vec<2>::Zero()),
+                                        disk(Vec<2>(1.0, 3.25 - 1e-6), Vec<2>::Zero(), 0.125)};
+        const auto law = LinearSpringDashpot::from_restitution(0.8, 2.5e-4, bodies[0].mass());
+        DemSettings settings = linear(law, 20, 0.5 * bodies[0].mass());
+        settings.is_fluid_force_held_in_contact = is_held_in_contact;
+        bodies[0].contact.held_fluid_force = Vec<2>(0.3, 2.0);
+        bodies[1].contact.held_fluid_force = Vec<2>(-0.1, 0.5);
+        for (Particle<2>& body : bodies) {
+            body.contact.steady_force = Vec<2>(0.0, -1.0);
+        }
+        CellList<2> cells(box.origin, box.length, 0.5);
+        ContactHistory<2> history;
+        (void)advance_contacts<2>(bodies, box, settings, dt, cells, history);
+        EXPECT_LT((bodies[1].contact.centre - bodies[0].contact.centre).norm(), 0.25);
+        return Vec<2>(bodies[0].mass() * bodies[0].contact.velocity +
+                      bodies[1].mass() * bodies[1].contact.velocity);
+    };
+    const Vec<2> always = momentum_change(true);
+    const Vec<2> touching_nothing = momentum_change(false);
+    EXPECT_NEAR((always - Vec<2>(0.2, 0.5) * dt).norm(), 0.0, 1e-15);
+    EXPECT_NEAR((touching_nothing - Vec<2>(0.0, -2.0) * dt).norm(), 0.0, 1e-15);
+}
+
 TEST(DemStep, AutomaticFluidForceIsHeldOnlyWithLubrication)
 {
     // contact.fluid_force: "auto" (the default) holds the resolved force with lubrication on
@@ -135,6 +167,10 @@ TEST(DemStep, AutomaticFluidForceIsHeldOnlyWithLubrication)
     static_assert(!held_fluid_force_applies(automatic, false));
     static_assert(held_fluid_force_applies(held, false) && held_fluid_force_applies(held, true));
     static_assert(!held_fluid_force_applies(none, true) && !held_fluid_force_applies(none, false));
+    static_assert(held_fluid_force_applies(always, false) &&
+                  held_fluid_force_acts_in_contact(always));
+    static_assert(!held_fluid_force_acts_in_contact(held) &&
+                  !held_fluid_force_acts_in_contact(automatic));
     EXPECT_TRUE(held_fluid_force_applies(automatic, true));
 }
 

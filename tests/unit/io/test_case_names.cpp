@@ -47,7 +47,7 @@ TEST(CaseNames, EveryTableReadsAndWritesEachOfItsValues)
     expect_round_trip<LubricationInContact>(2);
     expect_round_trip<TimeScheme>(2);
     expect_round_trip<ContactModelKind>(4);
-    expect_round_trip<ContactFluidForce>(3);
+    expect_round_trip<ContactFluidForce>(4);
     expect_round_trip<BodySweep>(2);
     expect_round_trip<MarkerLayout>(3);
 }
