@@ -38,6 +38,10 @@ struct MarkerCoupling {
     Inertia<Dim> body_second_moment = isotropic_inertia<Dim>(0.0);
     Inertia<Dim> fluid_second_moment = isotropic_inertia<Dim>(0.0);
     double forcing_change = 0.0; ///< of the last λ update (rigid_coupling.hpp) [m/s]
+    /// Per marker and component, max(1, r_m) with r_m the forcing operator's row sum
+    /// (coupling.normalised_forcing; coupling/forcing_gain.hpp): eq. (15)'s correction is
+    /// divided by it. Empty without the option (the paper's eq. (15)).
+    std::vector<Vec<Dim>> gains;
 
     MarkerCoupling() = default;
     explicit MarkerCoupling(MarkerSet<Dim> set)

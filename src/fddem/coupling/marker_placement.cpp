@@ -2,6 +2,7 @@
 #include "fddem/coupling/marker_placement.hpp"
 
 #include "fddem/core/errors.hpp"
+#include "fddem/coupling/forcing_gain.hpp"
 #include "fddem/coupling/transfer.hpp"
 
 #include <fmt/format.h>
@@ -48,7 +49,7 @@ void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time
 
 template <int Dim>
 void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
-                   const AnyKernel& kernel, long step, double time)
+                   const AnyKernel& kernel, long step, double time, bool is_forcing_normalised)
 {
     std::visit(
         [&](auto k) {
@@ -57,11 +58,35 @@ void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
             }
         },
         kernel);
+    if (is_forcing_normalised) {
+        set_forcing_gains<Dim>(bodies, grid, kernel);
+    }
+}
+
+template <int Dim>
+void set_forcing_gains(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                       const AnyKernel& kernel)
+{
+    for (Particle<Dim>& body : bodies) {
+        MarkerCoupling<Dim>& c = body.coupling;
+        // Unwrapped: the patch of faces follows the body across a periodic side.
+        std::vector<Vec<Dim>> unwrapped(c.offsets.size());
+        for (std::size_t l = 0; l < c.offsets.size(); ++l) {
+            unwrapped[l] = body.centre + c.offsets[l];
+        }
+        c.gains = forcing_row_sums<Dim>(kernel, unwrapped, c.markers.volumes, grid.origin(),
+                                        grid.spacing());
+        for (Vec<Dim>& g : c.gains) {
+            g = g.cwiseMax(1.0);
+        }
+    }
 }
 
 template void place_markers<2>(std::span<Particle<2>>, const MacGrid<2>&, const AnyKernel&, long,
-                               double);
+                               double, bool);
 template void place_markers<3>(std::span<Particle<3>>, const MacGrid<3>&, const AnyKernel&, long,
-                               double);
+                               double, bool);
+template void set_forcing_gains<2>(std::span<Particle<2>>, const MacGrid<2>&, const AnyKernel&);
+template void set_forcing_gains<3>(std::span<Particle<3>>, const MacGrid<3>&, const AnyKernel&);
 
 } // namespace fddem

@@ -16,8 +16,17 @@ namespace fddem {
 /// box along periodic axes (unchanged bit for bit where no wrap is needed). Throws
 /// NumericalError (of time step `step`, ending at `time` [s]) if a body's motion is not finite or
 /// a marker's kernel support leaves the grid's storage.
+/// With `is_forcing_normalised` (coupling.normalised_forcing) also sets each body's
+/// coupling.gains (set_forcing_gains).
 template <int Dim>
 void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
-                   const AnyKernel& kernel, long step, double time);
+                   const AnyKernel& kernel, long step, double time,
+                   bool is_forcing_normalised = false);
+
+/// Sets each body's coupling.gains, max(1, r_m) per marker and component, from its markers'
+/// offsets as they are (coupling/forcing_gain.hpp).
+template <int Dim>
+void set_forcing_gains(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                       const AnyKernel& kernel);
 
 } // namespace fddem

@@ -47,13 +47,14 @@ template <int Dim>
 double update_marker_force(const RigidVelocity<Dim>& motion, std::span<const Vec<Dim>> offsets,
                            std::span<const Vec<Dim>> fluid_at_markers,
                            std::span<const Vec<Dim>> lambda_star, double dt,
-                           std::span<Vec<Dim>> lambda)
+                           std::span<Vec<Dim>> lambda, std::span<const Vec<Dim>> gains)
 {
     double defect = 0.0;
     for (std::size_t l = 0; l < offsets.size(); ++l) {
         const Vec<Dim> rigid = motion.velocity + cross(motion.omega, offsets[l]);
         const Vec<Dim> slip = rigid - fluid_at_markers[l];
-        lambda[l] = lambda_star[l] + slip / dt;
+        lambda[l] = lambda_star[l] + (gains.empty() ? Vec<Dim>(slip / dt)
+                                                    : Vec<Dim>(slip.cwiseQuotient(gains[l]) / dt));
         defect = std::max(defect, slip.norm());
     }
     return defect;
@@ -88,10 +89,10 @@ template RigidVelocity<3> rigid_velocity<3>(const RigidUpdateInput<3>&, std::spa
                                             std::span<const Vec<3>>);
 template double update_marker_force<2>(const RigidVelocity<2>&, std::span<const Vec<2>>,
                                        std::span<const Vec<2>>, std::span<const Vec<2>>, double,
-                                       std::span<Vec<2>>);
+                                       std::span<Vec<2>>, std::span<const Vec<2>>);
 template double update_marker_force<3>(const RigidVelocity<3>&, std::span<const Vec<3>>,
                                        std::span<const Vec<3>>, std::span<const Vec<3>>, double,
-                                       std::span<Vec<3>>);
+                                       std::span<Vec<3>>, std::span<const Vec<3>>);
 template double forcing_change<2>(std::span<const Vec<2>>, std::span<const double>,
                                   std::span<const Vec<2>>, std::span<const Vec<2>>, double, double,
                                   double);

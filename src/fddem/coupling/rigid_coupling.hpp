@@ -73,11 +73,14 @@ rigid_velocity(const RigidUpdateInput<Dim>& in, std::span<const Vec<Dim>> offset
                std::span<const Vec<Dim>> lambda_star);
 
 /// eq. (15): λ on every marker; returns the rigid-motion defect max_l |U + ω×r_l − u_l| [m/s].
+/// With `gains` (coupling.normalised_forcing: g_l ≥ 1 per component, coupling/forcing_gain.hpp)
+/// the correction is divided by them, λ_l = λ*_l + (U + ω×r_l − u_l)/(g_l Δt), so that no slip
+/// mode overshoots; empty: the paper's eq. (15).
 template <int Dim>
 double update_marker_force(const RigidVelocity<Dim>& motion, std::span<const Vec<Dim>> offsets,
                            std::span<const Vec<Dim>> fluid_at_markers,
                            std::span<const Vec<Dim>> lambda_star, double dt,
-                           std::span<Vec<Dim>> lambda);
+                           std::span<Vec<Dim>> lambda, std::span<const Vec<Dim>> gains = {});
 
 /// How much the last λ update changed the force on a body, as the velocity change it would
 /// give a body of fluid density in one step: Δt (|Σ ΔV_l δλ_l| + 2 |Σ ΔV_l r_l × δλ_l| / r) / V

@@ -128,7 +128,7 @@ double new_forcing(Particle<Dim>& body, const RigidVelocity<Dim>& motion,
 {
     MarkerCoupling<Dim>& c = body.coupling;
     const double defect = update_marker_force<Dim>(motion, c.offsets, c.fluid, c.lambda_star, s.dt,
-                                                   c.lambda); // eq. (15)
+                                                   c.lambda, c.gains); // eq. (15)
     for (std::size_t l = 0; l < is_off.size(); ++l) {
         if (is_off[l] != 0) {
             c.lambda[l] = Vec<Dim>::Zero();

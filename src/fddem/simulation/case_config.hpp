@@ -182,6 +182,9 @@ struct CouplingConfig {
     /// What markers spread into a wall's ghost images goes back, through the ghost fill's
     /// transpose, onto the fluid those images are made of: D the adjoint of I beside a wall
     bool is_adjoint_at_walls = true;
+    /// Eq. (15)'s correction divided at each marker by max(1, the forcing operator's row sum)
+    /// (coupling/forcing_gain.hpp), so that no slip mode overshoots
+    bool is_forcing_normalised = false;
     BodySweep body_sweep = BodySweep::sequential; ///< coupling.body_sweep
 };
 

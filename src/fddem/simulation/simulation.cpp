@@ -39,7 +39,8 @@ Simulation<Dim>::Simulation(const CaseConfig& config, const Communicator& ranks)
 {
     clock_.dt = config.time.dt;
     times_.communication_clock = grid_.communicator().seconds_counter();
-    place_markers<Dim>(bodies_.all(), grid_, kernel_, 0, 0.0);
+    place_markers<Dim>(bodies_.all(), grid_, kernel_, 0, 0.0,
+                       config.coupling.is_forcing_normalised);
     set_uniform_body_force(vector_of<Dim>(config.fluid.body_force));
     fill_velocity_ghosts(grid_, bc_, state_.u);
     fill_cell_ghosts(grid_, bc_, state_.p);
@@ -308,7 +309,8 @@ void Simulation<Dim>::move_bodies_and_markers(const TimeLevels& levels)
     }
     move_bodies<Dim>(bodies_.all(), dt, contacts_ && contacts_->is_paper_coupling); // eq. (17)
     wrap_centres<Dim>(bodies_.all(), grid_.domain()); // re-entering across periodic sides
-    place_markers<Dim>(bodies_.all(), grid_, kernel_, clock_.step + 1, clock_.time + dt);
+    place_markers<Dim>(bodies_.all(), grid_, kernel_, clock_.step + 1, clock_.time + dt,
+                       config_.coupling.is_forcing_normalised);
     if (is_owner_split()) {
         hand_over<Dim>(bodies_.all(), owners, grid_); // to new owners and holders
     }
@@ -403,6 +405,9 @@ void Simulation<Dim>::finish_load()
                                  "the checkpoint's bodies have other markers than the case's");
             }
         }
+    }
+    if (config_.coupling.is_forcing_normalised) {
+        set_forcing_gains<Dim>(bodies_.all(), grid_, kernel_); // from the offsets just read
     }
     if (config_.time.max_courant || config_.time.is_steady) {
         set_time_step(clock_.dt); // the controlled step continues from where it was

@@ -228,11 +228,8 @@ TEST(RunCase, ExistingRunDirectoryIsRefusedUnlessOverwritten)
     EXPECT_TRUE(fs::exists(run / "solver.csv"));
 }
 
-TEST(RunCase, ASphereWithThePaperLayoutIsWarnedOfItsOvershootingForcing)
-{
-    // ForcingOperator.ThePaperLayoutOfASphereOvershoots: the warning names the layout the 3D
-    // cases use instead; a sphere with it, or a disk with the paper's, gets none.
-    const std::string sphere = R"(
+/// A fixed sphere of d = 8 h, one step.
+const std::string fixed_sphere_case = R"(
 [domain]
 size = [1.0, 1.0, 1.0]
 cells = [16, 16, 16]
@@ -249,6 +246,12 @@ motion = "fixed"
 dt = 0.01
 end = 0.01
 )";
+
+TEST(RunCase, ASphereWithThePaperLayoutIsWarnedOfItsOvershootingForcing)
+{
+    // ForcingOperator.ThePaperLayoutOfASphereOvershoots: the warning names the layout the 3D
+    // cases use instead; a sphere with it, or a disk with the paper's, gets none.
+    const std::string& sphere = fixed_sphere_case;
     const std::string warning = "warning: coupling.markers = \"paper\" on spheres";
     for (const bool is_paper : {true, false}) {
         const fs::path run = test::fresh_test_directory("fddem_run_case_") / "sphere";
@@ -267,6 +270,26 @@ end = 0.01
     ASSERT_EQ(run_case(read_case_string(settling_disk_case, "test:disk"), run, monitor).outcome,
               RunResult::Outcome::completed);
     EXPECT_FALSE(monitor.has_message(warning));
+}
+
+TEST(RunCase, AFineSphereWithThePaperForcingIsWarnedOfItsOvershoot)
+{
+    // ForcingOperator.TheRetractedMarkersOfASphereOvershootFromTwelveCellsPerDiameter: above
+    // about 10 cells per diameter eq. (15) as the paper writes it overshoots; the warning names
+    // coupling.normalised_forcing, which removes it. d/h = 8 and the option on get none.
+    const std::string& sphere = fixed_sphere_case;
+    const std::string warning = "warning: spheres of 16 cells per diameter";
+    const auto warns = [&](std::vector<std::string> settings) {
+        const fs::path run = test::fresh_test_directory("fddem_run_case_") / "sphere";
+        TestMonitor monitor;
+        settings.emplace_back("coupling.markers=\"retracted\"");
+        const CaseConfig config = read_case_string(sphere, "test:sphere", settings);
+        EXPECT_EQ(run_case(config, run, monitor).outcome, RunResult::Outcome::completed);
+        return monitor.has_message(warning) && monitor.has_message("coupling.normalised_forcing");
+    };
+    EXPECT_TRUE(warns({"domain.cells=[32,32,32]"}));
+    EXPECT_FALSE(warns({"domain.cells=[32,32,32]", "coupling.normalised_forcing=true"}));
+    EXPECT_FALSE(warns({}));
 }
 
 } // namespace

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+/// The gain of eqs. (15)–(16) at each marker: the row sums of the forcing operator M = I·D over
+/// one body's markers (docs/method.md §4, "The forcing operator"). A marker's slip e is
+/// corrected as e ← (1 − M) e in each outer iteration, a Richardson iteration that overshoots
+/// every mode whose eigenvalue exceeds 2. M's entries are non-negative (the kernels are), so its
+/// largest eigenvalue is at most its largest row sum r_m = Σ_l M_ml, and dividing each marker's
+/// correction by g_m = max(1, r_m) leaves an operator G⁻¹M whose eigenvalues are real (it is
+/// similar to the symmetric (G⁻¹V)^½ K (G⁻¹V)^½, with M = K V, K symmetric, V the marker
+/// volumes) and at most 1: no mode overshoots. The converged λ (no slip) is the same. This is the
+/// diagonal of the weights Pinelli et al. (2010, J. Comput. Phys. 229, 9073) solve for exactly.
+///
+/// Computed on a small patch of faces around the body, from the markers' unwrapped positions
+/// (centre + offset), so that it needs neither the grid's storage nor a message between ranks:
+/// the same numbers on every rank. Walls are not folded in (a wall's odd ghost image lowers
+/// the row sums of markers within the kernel's reach of it; the gain is then slightly high,
+/// which only damps those markers' correction a little more).
+#include "fddem/core/vec.hpp"
+#include "fddem/coupling/delta_kernel.hpp"
+
+#include <span>
+#include <vector>
+
+namespace fddem {
+
+/// r_m for every marker and velocity component: Σ_l M_ml with M_ml = ΔV_l Σ_f δ_h(x_f − X_l)
+/// δ_h(X_m − x_f) h^Dim over the faces f of that component (faces along an axis lie on the grid
+/// lines origin + k h, across it at the cell centres). `positions` unwrapped, `volumes` ΔV_l.
+template <int Dim, DeltaKernel Kernel>
+[[nodiscard]] std::vector<Vec<Dim>>
+forcing_row_sums(std::span<const Vec<Dim>> positions, std::span<const double> volumes,
+                 const Vec<Dim>& origin, const Vec<Dim>& spacing);
+
+/// The same for the kernel the case chose.
+template <int Dim>
+[[nodiscard]] std::vector<Vec<Dim>>
+forcing_row_sums(const AnyKernel& kernel, std::span<const Vec<Dim>> positions,
+                 std::span<const double> volumes, const Vec<Dim>& origin, const Vec<Dim>& spacing);
+
+} // namespace fddem
