@@ -202,9 +202,10 @@ TEST(ForcingOperator, TheGainsAreTheOperatorsRowSums)
 
 TEST(ForcingOperator, NormalisedForcingCorrectsEverySlipModeWithoutOvershoot)
 {
-    // coupling.normalised_forcing: G⁻¹M is similar to a symmetric non-negative matrix and its
-    // row sums are at most 1, so its eigenvalues lie in [0, 1]: the sphere at d = 12 h whose M
-    // reaches 2.86 no longer overshoots any mode.
+    // coupling.normalised_forcing: G⁻¹M is similar to (G⁻¹V)^½ K (G⁻¹V)^½ with K symmetric
+    // positive semi-definite (D the adjoint of I), so its eigenvalues are real and non-negative;
+    // its own entries are non-negative with row sums at most 1, so none exceeds 1. The sphere at
+    // d = 12 h whose M reaches 2.86 no longer overshoots any mode.
     for (const double shift : {0.0, 0.5}) {
         const auto [lowest, highest] =
             eigenvalue_range(sphere_in_box("retracted", shift, 12, true));

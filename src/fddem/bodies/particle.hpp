@@ -62,7 +62,8 @@ struct ContactState {
     Vec<Dim> steady_force = Vec<Dim>::Zero(); ///< held over the step: the buoyant weight [N]
     AngularVec<Dim> steady_torque = zero_angular<Dim>(); ///< [N·m]
     /// The resolved fluid force held over the sub-steps in which the body touches nothing
-    /// (contact.fluid_force = "held", or "auto" with lubrication on; zero otherwise) [N].
+    /// (contact.fluid_force = "held", or "auto" with lubrication on), or over all of them
+    /// ("always"); zero otherwise [N].
     Vec<Dim> held_fluid_force = Vec<Dim>::Zero();
     AngularVec<Dim> held_fluid_torque = zero_angular<Dim>(); ///< [N·m]
     Vec<Dim> centre = Vec<Dim>::Zero();                      ///< at the end of the sub-steps [m]

@@ -43,13 +43,12 @@ enum class ContactCoupling { paper, additive };
 /// their drag; docs/method.md §5, "A fluid force in an enduring contact").
 enum class ContactFluidForce { automatic, none, held, always };
 
-/// Whether the sub-steps hold the resolved fluid force: contact.fluid_force = "held", or "auto"
-/// with `is_lubrication_through_dem` (lubrication.enabled with coupling "dem"). Then the paper
-/// coupling hands a body to the DEM
-/// whenever it is within the lubrication range (about 2 h) of a wall or another body, for as
-/// long as it stays there; without the resolved force a sphere sliding down a side wall 0.8 h
-/// away then falls at its buoyant weight alone, 2.8 times faster than in open fluid after
-/// 0.06 s instead of slower (docs/method.md §5, Coupling).
+/// Whether the sub-steps hold the resolved fluid force: contact.fluid_force = "held" or
+/// "always", or "auto" with `is_lubrication_through_dem` (lubrication.enabled with coupling "dem").
+/// Then the paper coupling hands a body to the DEM whenever it is within the lubrication range
+/// (about 2 h) of a wall or another body, for as long as it stays there; without the resolved force
+/// a sphere sliding down a side wall 0.8 h away then falls at its buoyant weight alone, 2.8 times
+/// faster than in open fluid after 0.06 s instead of slower (docs/method.md §5, Coupling).
 [[nodiscard]] constexpr bool held_fluid_force_applies(ContactFluidForce choice,
                                                       bool is_lubrication_through_dem)
 {

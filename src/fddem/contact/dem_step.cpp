@@ -408,11 +408,11 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
         // during a contact the contact model alone acts (Kempe & Fröhlich 2012 neglect the
         // fluid force in contact, as Biegert et al. 2017 report; docs/method.md §5), unless
         // contact.fluid_force = "always" (an enduring contact keeps the fluid's drag).
-        const bool is_touching =
+        const bool is_fluid_left_out =
             contacts.touching[b] != 0 && !settings.is_fluid_force_held_in_contact;
-        const Vec<Dim> fluid = is_touching ? Vec<Dim>::Zero() : c.held_fluid_force;
+        const Vec<Dim> fluid = is_fluid_left_out ? Vec<Dim>::Zero() : c.held_fluid_force;
         const AngularVec<Dim> fluid_torque =
-            is_touching ? zero_angular<Dim>() : c.held_fluid_torque;
+            is_fluid_left_out ? zero_angular<Dim>() : c.held_fluid_torque;
         c.velocity = half_kick(c.velocity, Vec<Dim>(contacts.force[b] + c.steady_force + fluid),
                                body.mass(), settings.beta, half);
         c.omega =

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/coupling/forcing_gain.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>

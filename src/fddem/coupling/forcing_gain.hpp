@@ -12,9 +12,11 @@
 ///
 /// Computed on a small patch of faces around the body, from the markers' unwrapped positions
 /// (centre + offset), so that it needs neither the grid's storage nor a message between ranks:
-/// the same numbers on every rank. Walls are not folded in (a wall's odd ghost image lowers
-/// the row sums of markers within the kernel's reach of it; the gain is then slightly high,
-/// which only damps those markers' correction a little more).
+/// the same numbers on every rank. Walls are not folded in. With the hat kernel the retracted
+/// markers do not reach a wall's ghost images (docs/method.md §4) and the bound above holds;
+/// the wider kernels' do, and the fold (odd images) can make entries of M negative, so beside
+/// a wall only eigenvalues up to 2 are guaranteed there. The gains count the body's own
+/// markers only: the bound is per body (the sequential body sweep).
 #include "fddem/core/vec.hpp"
 #include "fddem/coupling/delta_kernel.hpp"
 

@@ -2,6 +2,7 @@
 #include "fddem/coupling/rigid_coupling.hpp"
 
 #include <algorithm>
+#include <cassert>
 
 namespace fddem {
 
@@ -49,6 +50,7 @@ double update_marker_force(const RigidVelocity<Dim>& motion, std::span<const Vec
                            std::span<const Vec<Dim>> lambda_star, double dt,
                            std::span<Vec<Dim>> lambda, std::span<const Vec<Dim>> gains)
 {
+    assert(gains.empty() || gains.size() == offsets.size());
     double defect = 0.0;
     for (std::size_t l = 0; l < offsets.size(); ++l) {
         const Vec<Dim> rigid = motion.velocity + cross(motion.omega, offsets[l]);

@@ -507,14 +507,17 @@ std::vector<KeySpec> case_schema()
                           "feedback around (docs/method.md §5, the stall in contact). false: every "
                           "marker acts, as the paper."),
                       &CaseConfig::coupling, &CouplingConfig::is_wall_marker_off));
-    s.push_back(bound(key("coupling", "normalised_forcing", T::boolean, none, "false",
-                          "Divide eq. (15)'s correction at each marker by max(1, r), r the row "
-                          "sum of the forcing operator I·D at that marker: the paper's eq. (15) "
-                          "overshoots every slip mode whose eigenvalue exceeds 2, which the "
-                          "sphere's markers have from d/h = 12 on (up to 3.2 at d/h = 16), and a "
-                          "moving body then diverges when Δt is small. The converged λ is the same "
-                          "(docs/method.md §4, \"The forcing operator\"). false: the paper's."),
-                      &CaseConfig::coupling, &CouplingConfig::is_forcing_normalised));
+    s.push_back(
+        bound(key("coupling", "normalised_forcing", T::boolean, none, "false",
+                  "Divide eq. (15)'s correction at each marker by max(1, r), r the row "
+                  "sum of the forcing operator I·D at that marker: the paper's eq. (15) "
+                  "overshoots every slip mode whose eigenvalue exceeds 2, which a "
+                  "sphere's retracted markers have from d/h = 12 on (up to 3.2 at d/h = "
+                  "16; the paper layout's already at 8), and a "
+                  "moving body then diverges when Δt is small. The converged λ is the same "
+                  "(docs/method.md §4, \"Finer than d = 8 h the sphere's forcing overshoots\"). "
+                  "false: the paper's."),
+              &CaseConfig::coupling, &CouplingConfig::is_forcing_normalised));
     s.push_back(bound(key("coupling", "adjoint_at_walls", T::boolean, none, "true",
                           "Fold what the markers spread into a wall's ghost images back onto "
                           "the fluid those images are made of, with the ghost fill's own "

@@ -41,7 +41,8 @@ void warn_of_overshooting_forcing(const CaseConfig& config, RunMonitor& monitor)
         return;
     }
     double spacing = 0.0;
-    for (std::size_t d = 0; d < config.domain.cells.size(); ++d) {
+    for (std::size_t d = 0; d < std::min(config.domain.cells.size(), config.domain.size.size());
+         ++d) {
         spacing = std::max(spacing, config.domain.size[d] / config.domain.cells[d]);
     }
     double finest = 0.0;
@@ -55,7 +56,8 @@ void warn_of_overshooting_forcing(const CaseConfig& config, RunMonitor& monitor)
             "warning: spheres of {:.3g} cells per diameter with the paper's eq. (15): their "
             "forcing overshoots (the largest eigenvalue of I·D is 2.6-2.9 at d/h = 12, 3.2 at 16), "
             "and a moving sphere then diverges at small time steps; set "
-            "coupling.normalised_forcing = true (docs/method.md §4, \"The forcing operator\")",
+            "coupling.normalised_forcing = true (docs/method.md §4, \"Finer than d = 8 h the "
+            "sphere's forcing overshoots\")",
             finest));
     }
 }

@@ -257,7 +257,8 @@ void Simulation<Dim>::resolve_contacts(StepReport& report)
     // Coupling) the last step's resolved force and torque are held over the sub-steps in which
     // the body touches nothing, so that a body the DEM moves (within the margin or the
     // lubrication range) keeps the fluid's resistance, as resolved codes hold the fluid force
-    // over their collision sub-steps; a body resting on a wall touches it and gets none.
+    // over their collision sub-steps; a body resting on a wall touches it and gets none, unless
+    // contact.fluid_force = "always" (an enduring contact keeps the fluid's drag).
     // With lubrication.coupling = "implicit" the DEM takes a body in contact, within the margin
     // or leaving a collision within the range, and "auto" holds nothing (a light body beside
     // another blew up with the held force: docs/method.md §5, "Implicit coupling of the film").
