@@ -7,8 +7,9 @@
 /// largest eigenvalue is at most its largest row sum r_m = Σ_l M_ml, and dividing each marker's
 /// correction by g_m = max(1, r_m) leaves an operator G⁻¹M whose eigenvalues are real (it is
 /// similar to the symmetric (G⁻¹V)^½ K (G⁻¹V)^½, with M = K V, K symmetric, V the marker
-/// volumes) and at most 1: no mode overshoots. The converged λ (no slip) is the same. This is the
-/// diagonal of the weights Pinelli et al. (2010, J. Comput. Phys. 229, 9073) solve for exactly.
+/// volumes) and at most 1: no mode overshoots. The converged λ (no slip) is the same. The idea is
+/// Pinelli et al.'s (2010, J. Comput. Phys. 229, 9073) marker weights, which they solve for
+/// (K ε = 1); this is a one-step row-sum approximation of it, not their solve.
 ///
 /// Computed on a small patch of faces around the body, from the markers' unwrapped positions
 /// (centre + offset), so that it needs neither the grid's storage nor a message between ranks:

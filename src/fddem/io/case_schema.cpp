@@ -512,9 +512,10 @@ std::vector<KeySpec> case_schema()
                   "Divide eq. (15)'s correction at each marker by max(1, r), r the row "
                   "sum of the forcing operator I·D at that marker: the paper's eq. (15) "
                   "overshoots every slip mode whose eigenvalue exceeds 2, which a "
-                  "sphere's retracted markers have from d/h = 12 on (up to 3.2 at d/h = "
-                  "16; the paper layout's already at 8), and a "
-                  "moving body then diverges when Δt is small. The converged λ is the same "
+                  "sphere's retracted markers have at d/h = 12 and 16 (up to 3.2; fddem "
+                  "warns above 10; the paper's layout already at d/h = 8), and a moving "
+                  "sphere at d/h = 16 then diverges when Δt is small. The converged λ is the "
+                  "same "
                   "(docs/method.md §4, \"Finer than d = 8 h the sphere's forcing overshoots\"). "
                   "false: the paper's."),
               &CaseConfig::coupling, &CouplingConfig::is_forcing_normalised));
@@ -558,13 +559,13 @@ std::vector<KeySpec> case_schema()
                           "moves, in contact or within the margin or the lubrication range, then "
                           "feels no resolved fluid force), held (the resolved hydrodynamic "
                           "force and torque of the step before, held constant over the sub-steps "
-                          "in which it touches nothing) or auto: held when lubrication.enabled "
-                          "with lubrication.coupling = \"dem\" (a body within the lubrication "
+                          "in which it touches nothing), always (held, also over the sub-steps "
+                          "in which the body touches: an enduring contact, two spheres touching "
+                          "as they settle, keeps its drag; §5, \"A fluid force in an enduring "
+                          "contact\") or auto: held when lubrication.enabled with "
+                          "lubrication.coupling = \"dem\" (a body within the lubrication "
                           "range of a wall would otherwise fall beside it at its buoyant weight "
-                          "alone), none otherwise, as the paper (docs/method.md §5, Coupling); "
-                          "always: held, also over the sub-steps in which the body touches (an "
-                          "enduring contact: two spheres touching as they settle keep their drag; "
-                          "§5, \"A fluid force in an enduring contact\")."),
+                          "alone), none otherwise, as the paper (docs/method.md §5, Coupling)."),
                       &CaseConfig::contact, &ContactConfig::fluid_force));
     s.push_back(bound(positive(key("contact", "stiffness", T::real, "N/m", "none",
                                    "Linear: spring stiffness k (2D: per unit depth); or give "
