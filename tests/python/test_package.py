@@ -550,6 +550,25 @@ class HeavyDisk(unittest.TestCase):
         self.assertTrue(r["reached_floor"])
         self.assertGreaterEqual(r["y_end"], heavy_disk.FLOOR_CLEARANCE)
 
+    def test_the_maximum_of_a_pair_is_the_faster_disks_before_its_floor(self):
+        # Body 0 peaks at Re 250; body 1 at 280 above the floor and at 900 below it.
+        t = np.linspace(0.0, 1.0, 11)
+        re = {0: 250.0 * np.sin(np.pi * t), 1: np.where(t < 0.75, 400.0 * t, 900.0)}
+        y = {0: 4.0 - t, 1: np.where(t < 0.75, 3.0 - t, 0.1)}
+        with tempfile.TemporaryDirectory() as directory:
+            with open(os.path.join(directory, "case.toml"), "w") as f:
+                f.write("[fluid]\ndensity = 1.0\nviscosity = 0.01\n\n[[bodies]]\ndiameter = 0.25\n")
+            with open(os.path.join(directory, "particles.csv"), "w") as f:
+                f.write("time,id,x,y,u,v\n")
+                for i, time in enumerate(t):
+                    for body in (0, 1):
+                        speed = re[body][i] * 0.01 / 0.25
+                        f.write(f"{time!r},{body},1.0,{y[body][i]!r},0.0,{-speed!r}\n")
+            r = heavy_disk.fall_maximum(directory)
+        self.assertEqual(r["body"], 1)
+        self.assertAlmostEqual(r["Re_max"], 400.0 * 0.7, delta=1e-9)
+        self.assertTrue(r["reached_floor"])
+
 class AddedMass(unittest.TestCase):
     """tools/added_mass.py: the potential-flow added mass of a disk in a closed box, by the method
     of fundamental solutions (the reference of tests/verification/test_added_mass.cpp)."""
