@@ -569,6 +569,40 @@ class HeavyDisk(unittest.TestCase):
         self.assertAlmostEqual(r["Re_max"], 400.0 * 0.7, delta=1e-9)
         self.assertTrue(r["reached_floor"])
 
+    def write_pair(self, directory, rows):
+        """rows: (time, id, y, v, contact_fy) of two disks d = 0.25 in ν = 0.01."""
+        with open(os.path.join(directory, "case.toml"), "w") as f:
+            f.write("[fluid]\ndensity = 1.0\nviscosity = 0.01\n\n[[bodies]]\ndiameter = 0.25\n"
+                    "\n[[bodies]]\ndiameter = 0.25\n")
+        with open(os.path.join(directory, "particles.csv"), "w") as f:
+            f.write("time,id,x,y,u,v,contact_fx,contact_fy\n")
+            for time, body, y, v, contact in rows:
+                f.write(f"{time!r},{body},1.0,{y!r},0.0,{v!r},0.0,{contact!r}\n")
+
+    def test_before_contact_reads_only_the_samples_before_the_first_touch(self):
+        # Re = 25 |v|. Body 0 reaches 20 (Re 500) after the pair touches at t = 0.2; before it,
+        # body 1's 18 (Re 450) is the largest. A body starting below the floor is left out.
+        rows = []
+        for k, time in enumerate((0.0, 0.1, 0.2, 0.3)):
+            rows.append((time, 0, 3.0, -(10.0, 16.0, 17.0, 20.0)[k], 0.0 if time < 0.2 else 5.0))
+            rows.append((time, 1, 2.0, -(12.0, 18.0, 15.0, 14.0)[k], 0.0 if time < 0.2 else -5.0))
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_pair(directory, rows)
+            anytime = heavy_disk.fall_maximum(directory)
+            before = heavy_disk.fall_maximum(directory, before_contact=True)
+        self.assertAlmostEqual(anytime["Re_max"], 500.0, delta=1e-9)
+        self.assertAlmostEqual(before["Re_max"], 450.0, delta=1e-9)
+        self.assertEqual(before["body"], 1)
+        self.assertAlmostEqual(before["first_contact"], 0.2, delta=1e-12)
+
+    def test_disks_that_start_below_the_floor_clearance_are_refused(self):
+        rows = [(time, body, 0.2, -10.0, 0.0) for time in (0.0, 0.1) for body in (0, 1)]
+        with tempfile.TemporaryDirectory() as directory:
+            self.write_pair(directory, rows)
+            with self.assertRaises(ValueError):
+                heavy_disk.fall_maximum(directory)
+
+
 class AddedMass(unittest.TestCase):
     """tools/added_mass.py: the potential-flow added mass of a disk in a closed box, by the method
     of fundamental solutions (the reference of tests/verification/test_added_mass.cpp)."""

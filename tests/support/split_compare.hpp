@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
+#include <vector>
 
 namespace fddem::test {
 
@@ -95,6 +97,25 @@ double marker_force_difference(const Particles<Dim>& split, const Particles<Dim>
         }
     }
     return largest > 0.0 ? worst / largest : worst;
+}
+
+/// The largest difference between the two runs' forcing gains (coupling.normalised_forcing;
+/// both empty without it), or infinity when a body's gain lists differ in length.
+template <int Dim>
+double gain_difference(const Particles<Dim>& split, const Particles<Dim>& whole)
+{
+    double worst = 0.0;
+    for (std::size_t k = 0; k < whole.size(); ++k) {
+        const std::vector<Vec<Dim>>& a = split[k].coupling.gains;
+        const std::vector<Vec<Dim>>& b = whole[k].coupling.gains;
+        if (a.size() != b.size()) {
+            return std::numeric_limits<double>::infinity();
+        }
+        for (std::size_t l = 0; l < b.size(); ++l) {
+            worst = std::max(worst, (a[l] - b[l]).cwiseAbs().maxCoeff());
+        }
+    }
+    return worst;
 }
 
 } // namespace fddem::test
