@@ -248,9 +248,10 @@ TEST(SplitSimulation, SpheresCollidingWithTheSoaksOptionsMatchOneProcess)
     // The soak's options (cases/validation/sphere_pile_soak): the forcing gains of
     // coupling/forcing_gain.hpp, computed by every rank from the markers' unwrapped positions
     // (sphere 3 lies across the periodic side, spheres 1 and 2 across the rank faces), and the
-    // held fluid force acting in contact. Measured with mixing on (depth 2), the split runs of
-    // three disks differed by up to 5.5e-7 relative; with mixing off, as here, by 1.9e-12: the
-    // mixing's amplification of round-off (docs/parallel.md, "Bodies"), not the gains.
+    // held fluid force acting in contact. Measured by hand on tests/mpi/cases/three_disks.toml
+    // with the option: mixing on (depth 2) the split runs differed by up to 5.5e-7 relative,
+    // mixing off (as here) by 1.9e-12: the mixing's amplification of round-off
+    // (docs/parallel.md, "Anderson mixing and the same answer"), not the gains.
     const std::vector<std::string> options = {"coupling.normalised_forcing=true",
                                               "contact.fluid_force=always"};
     {
