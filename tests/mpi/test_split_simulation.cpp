@@ -148,6 +148,17 @@ TEST(SplitSimulation, DisksAcrossRankFacesCollidingMatchOneProcess)
     expect_split_case_matches<2>("disks.toml", "2D disks");
 }
 
+TEST(SplitSimulation, DisksCollidingWithAndersonMixingMatchOneProcess)
+{
+    // The default acceleration of the outer iterations (the case file turns it off for the
+    // other tests). Its weights γ are rounded to 12 significant bits
+    // (linsolve/anderson_mixing.hpp); unrounded, the split runs left the one-process run by
+    // 1e-6 within six steps and took other numbers of outer iterations from step 7 on
+    // (docs/parallel.md, "Anderson mixing and the same answer").
+    expect_split_case_matches<2>("disks.toml", "2D disks, Anderson mixing",
+                                 {"simple.acceleration_depth=2"});
+}
+
 TEST(SplitSimulation, DisksCollidingSweptTogetherMatchOneProcess)
 {
     // coupling.body_sweep = "simultaneous": one halo exchange per outer iteration for all the
@@ -249,8 +260,9 @@ TEST(SplitSimulation, SpheresCollidingWithTheSoaksOptionsMatchOneProcess)
     // coupling/forcing_gain.hpp, computed by every rank from the markers' unwrapped positions
     // (sphere 3 lies across the periodic side, spheres 1 and 2 across the rank faces), and the
     // held fluid force acting in contact. Measured by hand on tests/mpi/cases/three_disks.toml
-    // with the option: mixing on (depth 2) the split runs differed by up to 5.5e-7 relative,
-    // mixing off (as here) by 1.9e-12: the mixing's amplification of round-off
+    // with the option: mixing on (depth 2) with its weights unrounded the split runs differed by
+    // up to 5.5e-7 relative, mixing off (as here) by 1.9e-12, and mixing on with the weights
+    // rounded (the default since) by 2.3e-13: the mixing's amplification of round-off
     // (docs/parallel.md, "Anderson mixing and the same answer"), not the gains.
     const std::vector<std::string> options = {"coupling.normalised_forcing=true",
                                               "contact.fluid_force=always"};

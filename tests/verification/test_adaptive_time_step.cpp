@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "support/case_builders.hpp"
@@ -103,13 +104,26 @@ TEST(AdaptiveTimeStep, AStepBelowTheShortestAllowedStopsTheRunAtTheLastGoodStep)
 
 TEST(AdaptiveTimeStep, ARunThatBlowsUpAtTheFixedStepRunsWithTheLimit)
 {
-    // At Δt = 0.02 the flow around the falling disk blows up (measured: step 7, t = 0.14 s,
-    // Courant numbers 8 to 14). With the limit the same run goes on past that time.
+    // At Δt = 0.02 the flow around the falling disk breaks down: the Courant number reaches
+    // hundreds (measured: 14, 28, 70, 55, then 804 at step 5 with the default Anderson mixing;
+    // 507 at step 5 without it), the outer iterations stop unconverged at their limit, and with
+    // the mixing's weights unrounded (before the twenty-third session) the velocity overflowed at
+    // step 7. Whether the broken-down flow overflows depends on round-off, so either outcome is
+    // taken as the breakdown. With the limit the same run keeps the Courant number near 1.
     const CaseConfig fixed = read_case_string(heavy_disk, "test:heavy disk");
     {
         const test::NansAllowed overflow; // the blow-up, until NumericalError reports it
         Simulation<2> sim(fixed);
-        EXPECT_THROW(while (!sim.is_finished(sim.advance())){}, NumericalError);
+        double fixed_courant = 0.0;
+        try {
+            for (StepReport report = sim.advance(); !sim.is_finished(report);
+                 report = sim.advance()) {
+                fixed_courant = std::max(fixed_courant, report.courant);
+            }
+        } catch (const NumericalError&) {
+            fixed_courant = INFINITY;
+        }
+        EXPECT_GT(fixed_courant, 100.0);
     }
     const CaseConfig limited =
         read_case_string(heavy_disk, "test:heavy disk", {"time.max_courant=0.5"});

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <stdexcept>
 
 namespace fddem {
@@ -112,9 +113,22 @@ double blocked_dot(std::span<const double> a, std::span<const double> b)
     return sum;
 }
 
-AndersonMixing::AndersonMixing(int depth)
-    : depth_(std::max(depth, 0)), delta_f_(static_cast<std::size_t>(depth_)),
-      delta_g_(static_cast<std::size_t>(depth_)),
+double round_to_significant_bits(double x, int bits)
+{
+    assert(bits >= 1);
+    if (x == 0.0 || !std::isfinite(x)) {
+        return x;
+    }
+    int exponent = 0;
+    const double mantissa =
+        std::frexp(x, &exponent); // x = mantissa · 2^exponent, |mantissa| in [0.5, 1)
+    // std::nearbyint in the default rounding mode: ties to even. Scaling by powers of two is exact.
+    return std::ldexp(std::nearbyint(std::ldexp(mantissa, bits)), exponent - bits);
+}
+
+AndersonMixing::AndersonMixing(int depth, int weight_bits)
+    : depth_(std::max(depth, 0)), weight_bits_(std::max(weight_bits, 0)),
+      delta_f_(static_cast<std::size_t>(depth_)), delta_g_(static_cast<std::size_t>(depth_)),
       gram_(static_cast<std::size_t>(depth_ * depth_), 0.0)
 {
 }
@@ -209,7 +223,12 @@ void AndersonMixing::mix(std::span<const MixedSegment> segments)
     for (Eigen::Index k = 0; k < n; ++k) {
         projected(k) = values(k) > cutoff ? projected(k) / values(k) : 0.0;
     }
-    const Eigen::VectorXd gamma = eigen.eigenvectors() * projected;
+    Eigen::VectorXd gamma = eigen.eigenvectors() * projected;
+    if (weight_bits_ > 0) { // see the header: the same γ on any number of ranks
+        for (Eigen::Index k = 0; k < n; ++k) {
+            gamma(k) = round_to_significant_bits(gamma(k), weight_bits_);
+        }
+    }
     for (int k = 0; k < columns_; ++k) { // newest first
         gamma_.push_back(gamma(static_cast<Eigen::Index>((newest_ - k + depth_) % depth_)));
     }

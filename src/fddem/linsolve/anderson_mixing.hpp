@@ -26,6 +26,15 @@
 /// it with velocities); they must come first. Segments of weight 0 are carried along: mixed
 /// with the same γ, but not measured. Sums are taken in fixed blocks added in block order, so
 /// the result is bit-identical for any thread count.
+///
+/// The weights γ are rounded to `weight_bits` significant bits (default 12: a relative change of
+/// at most 2⁻¹² = 2.4e-4, which leaves the acceleration as it is). Unrounded, γ is a steep
+/// function of the iterates near convergence (ΔF is a difference of nearly equal residuals), and
+/// the mixed iteration amplified a round-off difference of 1e-16 in its inputs by 1e3–1e4 per time
+/// step: a run on two ranks, whose sums are added in another order, left the one-process run by
+/// 1e-6 within six steps (docs/parallel.md, "Anderson mixing and the same answer"). Rounded, the
+/// same γ comes out of both runs unless an unrounded γ lies within its round-off of a rounding
+/// boundary, and the mixed iteration contracts a difference as the plain one does.
 
 #include <cstddef>
 #include <span>
@@ -41,8 +50,12 @@ struct MixedSegment {
 
 class AndersonMixing {
 public:
-    /// `depth` = m, the number of differences kept (0: plain fixed-point iteration).
-    explicit AndersonMixing(int depth);
+    /// The significant bits γ is rounded to (0: not rounded).
+    static constexpr int default_weight_bits = 12;
+
+    /// `depth` = m, the number of differences kept (0: plain fixed-point iteration);
+    /// `weight_bits`: γ rounded to that many significant bits (0: not rounded).
+    explicit AndersonMixing(int depth, int weight_bits = default_weight_bits);
 
     /// Forgets the history: the next remember()/mix() pair starts afresh (a new time step).
     void reset() noexcept;
@@ -60,6 +73,7 @@ public:
 
 private:
     int depth_;
+    int weight_bits_;
     std::vector<double> x_;          ///< the measured part of x_k, weighted
     std::vector<double> f_previous_; ///< f_{k−1} (measured part, weighted)
     std::vector<double> g_previous_; ///< G(x_{k−1}) (all segments)
@@ -73,6 +87,10 @@ private:
     std::vector<double> gram_; ///< ΔFᵀΔF of the slots (depth × depth, row-major)
     std::vector<double> gamma_;
 };
+
+/// x rounded to the nearest number with `bits` significant bits (ties to even; bits ≥ 1): a
+/// relative change of at most 2^−bits. 0, infinities and NaN come back as they are.
+[[nodiscard]] double round_to_significant_bits(double x, int bits);
 
 /// Σ a_i b_i, in blocks added in block order (thread-count independent).
 [[nodiscard]] double blocked_dot(std::span<const double> a, std::span<const double> b);
