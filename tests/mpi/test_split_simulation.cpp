@@ -262,8 +262,8 @@ TEST(SplitSimulation, SpheresCollidingWithTheSoaksOptionsMatchOneProcess)
     // held fluid force acting in contact. Measured by hand on tests/mpi/cases/three_disks.toml
     // with the option: mixing on (depth 2) with its weights unrounded the split runs differed by
     // up to 5.5e-7 relative, mixing off (as here) by 1.9e-12, and mixing on with the weights
-    // rounded (the default since) by 2.3e-13: the mixing's amplification of round-off
-    // (docs/parallel.md, "Anderson mixing and the same answer"), not the gains.
+    // rounded (simple.acceleration_weight_bits = 12) by 2.3e-13: the mixing's amplification of
+    // round-off (docs/parallel.md, "Anderson mixing and the same answer"), not the gains.
     const std::vector<std::string> options = {"coupling.normalised_forcing=true",
                                               "contact.fluid_force=always"};
     {

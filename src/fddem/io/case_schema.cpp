@@ -376,6 +376,13 @@ std::vector<KeySpec> case_schema()
                                  "docs/method.md §4)."),
                              0, 10, false, false),
                       &CaseConfig::simple, &SimpleConfig::acceleration_depth));
+    s.push_back(bound(ranged(key("simple", "acceleration_weight_bits", T::integer, none, "12",
+                                 "Significant bits the Anderson acceleration's weights are "
+                                 "rounded to, so that round-off (another number of MPI ranks) "
+                                 "does not move them (0: not rounded; docs/parallel.md, "
+                                 "\"Anderson mixing and the same answer\")."),
+                             0, 52, false, false),
+                      &CaseConfig::simple, &SimpleConfig::acceleration_weight_bits));
     s.push_back(
         bound(ranged(key("simple", "momentum_sweeps", T::integer, none, "4",
                          "Red-black Gauss–Seidel sweeps of the momentum equations per V-cycle "

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/linsolve/anderson_mixing.hpp"
 
+#include "fddem/core/errors.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace fddem {
@@ -115,13 +118,16 @@ double blocked_dot(std::span<const double> a, std::span<const double> b)
 
 double round_to_significant_bits(double x, int bits)
 {
-    assert(bits >= 1);
-    if (x == 0.0 || !std::isfinite(x)) {
+    FDDEM_ASSERT(bits >= 1, "round_to_significant_bits needs at least one bit");
+    if (x == 0.0 || !std::isfinite(x) || bits >= std::numeric_limits<double>::digits) {
         return x;
     }
     int exponent = 0;
-    const double mantissa =
-        std::frexp(x, &exponent); // x = mantissa · 2^exponent, |mantissa| in [0.5, 1)
+    // x = mantissa · 2^exponent, |mantissa| in [0.5, 1)
+    const double mantissa = std::frexp(x, &exponent);
+    if (exponent >= std::numeric_limits<double>::max_exponent) {
+        return x; // |x| ≥ 2¹⁰²³: rounding up could overflow
+    }
     // std::nearbyint in the default rounding mode: ties to even. Scaling by powers of two is exact.
     return std::ldexp(std::nearbyint(std::ldexp(mantissa, bits)), exponent - bits);
 }

@@ -27,14 +27,15 @@
 /// with the same γ, but not measured. Sums are taken in fixed blocks added in block order, so
 /// the result is bit-identical for any thread count.
 ///
-/// The weights γ are rounded to `weight_bits` significant bits (default 12: a relative change of
-/// at most 2⁻¹² = 2.4e-4, which leaves the acceleration as it is). Unrounded, γ is a steep
-/// function of the iterates near convergence (ΔF is a difference of nearly equal residuals), and
-/// the mixed iteration amplified a round-off difference of 1e-16 in its inputs by 1e3–1e4 per time
-/// step: a run on two ranks, whose sums are added in another order, left the one-process run by
-/// 1e-6 within six steps (docs/parallel.md, "Anderson mixing and the same answer"). Rounded, the
-/// same γ comes out of both runs unless an unrounded γ lies within its round-off of a rounding
-/// boundary, and the mixed iteration contracts a difference as the plain one does.
+/// The weights γ are rounded to `weight_bits` significant bits (default 12, the case key
+/// simple.acceleration_weight_bits: a relative change of at most 2⁻¹² = 2.4e-4). Unrounded, γ is
+/// a steep function of the iterates near convergence (ΔF is a difference of nearly equal
+/// residuals), and the mixed iteration amplified a round-off difference in its inputs by 1e2–1e4
+/// per time step: a run on two ranks, whose sums are added in another order, left the
+/// one-process run by 1.7e-4 within six steps (docs/parallel.md, "Anderson mixing and the same
+/// answer"). Rounded, the same γ comes out of both runs unless an unrounded γ lies within its
+/// round-off of a rounding boundary; with the same γ, the update is affine in the iterates, so a
+/// difference between the runs is carried by fixed weights instead of moving them.
 
 #include <cstddef>
 #include <span>
@@ -89,7 +90,8 @@ private:
 };
 
 /// x rounded to the nearest number with `bits` significant bits (ties to even; bits ≥ 1): a
-/// relative change of at most 2^−bits. 0, infinities and NaN come back as they are.
+/// relative change of at most 2^−bits. 0, infinities, NaN, |x| ≥ 2¹⁰²³ (whose rounding could
+/// overflow) and bits ≥ 53 (a double's own precision) give x as it is.
 [[nodiscard]] double round_to_significant_bits(double x, int bits);
 
 /// Σ a_i b_i, in blocks added in block order (thread-count independent).

@@ -103,8 +103,9 @@ struct SimpleConfig {
     double pressure_relaxation = 1.0;
     PressureUpdate pressure_update = PressureUpdate::rotational; ///< eq. (10)
     int acceleration_depth = 2; ///< Anderson mixing depth of a step's outer iterations (0: off)
-    int momentum_sweeps = 4;    ///< Gauss–Seidel sweeps per V-cycle (or in all, without cycles)
-    int momentum_cycles = 1;    ///< multigrid V-cycles per outer iteration (0: sweeps alone)
+    int acceleration_weight_bits = 12; ///< the mixing's weights rounded to this (0: not rounded)
+    int momentum_sweeps = 4; ///< Gauss–Seidel sweeps per V-cycle (or in all, without cycles)
+    int momentum_cycles = 1; ///< multigrid V-cycles per outer iteration (0: sweeps alone)
     MomentumSolver momentum_solver = MomentumSolver::automatic;
     ConvectionScheme convection = ConvectionScheme::central;
     PoissonSolverKind pressure_solver = PoissonSolverKind::automatic;

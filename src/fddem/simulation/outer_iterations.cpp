@@ -67,7 +67,7 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
           grid, bc.is_periodic,
           PoissonSettings{config.simple.pressure_solver, config.simple.linear_tolerance,
                           config.simple.linear_max_iterations, config.simple.fft_planning})),
-      mixing_(config.simple.acceleration_depth)
+      mixing_(config.simple.acceleration_depth, config.simple.acceleration_weight_bits)
 {
     if (is_lubrication_implicit_ && is_simultaneous_ && grid.communicator().size() > 1) {
         // The owners of a split grid's simultaneous sweep each solve their own bodies' eqs.

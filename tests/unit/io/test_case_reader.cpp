@@ -432,6 +432,13 @@ std::vector<BadCase> bad_cases()
          19,
          "simple.acceleration_depth",
          "out of range"},
+        {"weight_bits_beyond_a_double",
+         v + "[simple]\nacceleration_weight_bits = 53\n",
+         {},
+         f,
+         19,
+         "simple.acceleration_weight_bits",
+         "out of range"},
         {"dt_longer_than_end",
          replace(v, "dt = 0.01", "dt = 2.0"),
          {},
@@ -1246,6 +1253,7 @@ velocity_relaxation = 0.8
 pressure_relaxation = 0.6
 pressure_update = "standard"
 acceleration_depth = 3
+acceleration_weight_bits = 10
 momentum_sweeps = 6
 momentum_cycles = 2
 momentum_solver = "gauss_seidel"
@@ -1312,6 +1320,7 @@ scheme = "bdf2"
     EXPECT_EQ(simple.pressure_relaxation, 0.6);
     EXPECT_EQ(simple.pressure_update, PressureUpdate::standard);
     EXPECT_EQ(simple.acceleration_depth, 3);
+    EXPECT_EQ(simple.acceleration_weight_bits, 10);
     EXPECT_EQ(simple.momentum_sweeps, 6);
     EXPECT_EQ(simple.momentum_cycles, 2);
     EXPECT_EQ(simple.momentum_solver, MomentumSolver::gauss_seidel);
