@@ -198,10 +198,19 @@ std::string Driver<Dim>::completion_message() const
             ? fmt::format(" (every free body slower than time.rest_speed = {:g} since t = {:g} s)",
                           *config_.time.rest_speed, *rest)
             : std::string();
-    return fmt::format("fddem: {}: {} steps to t = {:.6g} s{}, {} outer iterations, {:.2f} s; "
+    // The run's warnings name at most the first unconverged steps; the last line says how many
+    // there were, so that a run whose steps broke down does not read as a clean one.
+    const std::string unconverged =
+        record_.unconverged_steps > 0
+            ? fmt::format(" ({} of the {} steps unconverged, largest Courant number {:.3g}; "
+                          "solver.csv has every step)",
+                          record_.unconverged_steps, sim_.clock().step, record_.max_courant)
+            : std::string();
+    return fmt::format("fddem: {}: {} steps to t = {:.6g} s{}, {} outer iterations{}, {:.2f} s; "
                        "results in {}",
                        config_.source_file, sim_.clock().step, sim_.clock().time, settled,
-                       record_.total_outer_iterations, record_.wall_seconds, directory_.string());
+                       record_.total_outer_iterations, unconverged, record_.wall_seconds,
+                       directory_.string());
 }
 
 template <int Dim>

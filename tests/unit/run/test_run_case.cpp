@@ -100,6 +100,27 @@ private:
     long stop_after_;
 };
 
+TEST(RunCase, TheLastLineCountsTheUnconvergedSteps)
+{
+    // One outer iteration a step cannot reach the tolerance: every step ends unconverged, and
+    // the last line says so (the warnings name only the first 10).
+    const fs::path run = test::fresh_test_directory("fddem_run_case_") / "cavity";
+    TestMonitor monitor;
+    const RunResult result =
+        run_case(read_case_string(cavity_case, "test:cavity",
+                                  {"simple.max_outer_iterations=1", "simple.tolerance=1e-8"}),
+                 run, monitor);
+    ASSERT_EQ(result.outcome, RunResult::Outcome::completed);
+    EXPECT_TRUE(monitor.has_message("(20 of the 20 steps unconverged, largest Courant number "))
+        << monitor.messages.back();
+    // and a converged run's line does not
+    TestMonitor clean;
+    const fs::path clean_run = test::fresh_test_directory("fddem_run_case_") / "cavity";
+    ASSERT_EQ(run_case(read_case_string(cavity_case, "test:cavity"), clean_run, clean).outcome,
+              RunResult::Outcome::completed);
+    EXPECT_FALSE(clean.has_message("unconverged, largest")) << clean.messages.back();
+}
+
 TEST(RunCase, CavityRunDirectoryHoldsTheDocumentedFilesAndTheLidDrivenFlow)
 {
     const fs::path run = test::fresh_test_directory("fddem_run_case_") / "cavity";
