@@ -30,7 +30,7 @@
 /// The weights γ are rounded to `weight_bits` significant bits (default 12, the case key
 /// simple.acceleration_weight_bits: a relative change of at most 2⁻¹² = 2.4e-4). Unrounded, γ is
 /// a steep function of the iterates near convergence (ΔF is a difference of nearly equal
-/// residuals), and the mixed iteration amplified a round-off difference in its inputs by 1e2–1e4
+/// residuals), and the mixed iteration amplified a round-off difference in its inputs by up to 1e4
 /// per time step: a run on two ranks, whose sums are added in another order, left the
 /// one-process run by 1.7e-4 within six steps (docs/parallel.md, "Anderson mixing and the same
 /// answer"). Rounded, the same γ comes out of both runs unless an unrounded γ lies within its
