@@ -15,6 +15,7 @@
 #include "fddem/fluid/fluid_state.hpp"
 #include "fddem/fluid/momentum.hpp"
 #include "fddem/fluid/pressure_correction.hpp"
+#include "fddem/linsolve/anderson_mixing.hpp"
 #include "fddem/linsolve/poisson_solver.hpp"
 
 #include <array>
@@ -103,7 +104,8 @@ struct SimpleConfig {
     double pressure_relaxation = 1.0;
     PressureUpdate pressure_update = PressureUpdate::rotational; ///< eq. (10)
     int acceleration_depth = 2; ///< Anderson mixing depth of a step's outer iterations (0: off)
-    int acceleration_weight_bits = 12; ///< the mixing's weights rounded to this (0: not rounded)
+    /// the mixing's weights rounded to this many significant bits (0: not rounded)
+    int acceleration_weight_bits = AndersonMixing::default_weight_bits;
     int momentum_sweeps = 4; ///< Gauss–Seidel sweeps per V-cycle (or in all, without cycles)
     int momentum_cycles = 1; ///< multigrid V-cycles per outer iteration (0: sweeps alone)
     MomentumSolver momentum_solver = MomentumSolver::automatic;
