@@ -3,6 +3,7 @@
 // The issue-15 tests' comparison of an array on a split grid with the one-process array.
 
 #include "fddem/bodies/particles.hpp"
+#include "fddem/coupling/marker_routes.hpp"
 #include "fddem/grid/communicator.hpp"
 #include "fddem/grid/fields.hpp"
 #include "fddem/grid/loops.hpp"
@@ -102,10 +103,14 @@ double marker_force_difference(const Particles<Dim>& split, const Particles<Dim>
 /// The largest difference between the two runs' forcing gains (coupling.normalised_forcing;
 /// both empty without it), or infinity when a body's gain lists differ in length.
 template <int Dim>
-double gain_difference(const Particles<Dim>& split, const Particles<Dim>& whole)
+double gain_difference(const Particles<Dim>& split, const Particles<Dim>& whole,
+                       const MacGrid<Dim>& split_grid)
 {
     double worst = 0.0;
     for (std::size_t k = 0; k < whole.size(); ++k) {
+        if (!holds_markers_of(split_grid, split[k])) {
+            continue; // this rank neither owns the body nor holds any of its markers
+        }
         const std::vector<Vec<Dim>>& a = split[k].coupling.gains;
         const std::vector<Vec<Dim>>& b = whole[k].coupling.gains;
         if (a.size() != b.size()) {

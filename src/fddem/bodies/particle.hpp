@@ -42,6 +42,9 @@ struct MarkerCoupling {
     /// (coupling.normalised_forcing; coupling/forcing_gain.hpp): eq. (15)'s correction is
     /// divided by it. Empty without the option (the paper's eq. (15)).
     std::vector<Vec<Dim>> gains;
+    /// The outermost marker's distance from the centre, max |r_l| [m]: every marker lies within
+    /// it (which ranks hold some of the markers: coupling/marker_routes.hpp).
+    double reach = 0.0;
 
     MarkerCoupling() = default;
     explicit MarkerCoupling(MarkerSet<Dim> set)
@@ -49,7 +52,7 @@ struct MarkerCoupling {
           fluid(markers.size()), lambda(markers.size(), Vec<Dim>::Zero()),
           lambda_star(markers.size(), Vec<Dim>::Zero()),
           body_second_moment(second_moment_tensor<Dim>(markers.offsets, markers.volumes)),
-          fluid_second_moment(body_second_moment)
+          fluid_second_moment(body_second_moment), reach(markers.outermost_radius())
     {
     }
 };

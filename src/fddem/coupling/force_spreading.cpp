@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/coupling/force_spreading.hpp"
 
+#include "fddem/coupling/marker_routes.hpp"
 #include "fddem/coupling/transfer.hpp"
 #include "fddem/grid/halo_exchange.hpp"
 
@@ -26,6 +27,9 @@ void spread_marker_forces(std::span<const Particle<Dim>> bodies, const MacGrid<D
     std::visit(
         [&](auto k) {
             for (const Particle<Dim>& body : bodies) {
+                if (!holds_markers_of(grid, body)) {
+                    continue; // none of its markers in this rank's cells (a split grid)
+                }
                 const MarkerCoupling<Dim>& c = body.coupling;
                 for (std::size_t l = 0; l < c.markers.size(); ++l) {
                     if (!grid.owns_point(c.positions[l])) {

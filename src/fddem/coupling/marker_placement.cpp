@@ -3,6 +3,7 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/forcing_gain.hpp"
+#include "fddem/coupling/marker_routes.hpp"
 #include "fddem/coupling/transfer.hpp"
 
 #include <fmt/format.h>
@@ -49,7 +50,8 @@ void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time
 
 template <int Dim>
 void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
-                   const AnyKernel& kernel, long step, double time, bool is_forcing_normalised)
+                   const AnyKernel& kernel, long step, double time, bool is_forcing_normalised,
+                   bool is_owner_split)
 {
     std::visit(
         [&](auto k) {
@@ -58,8 +60,17 @@ void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
             }
         },
         kernel);
-    if (is_forcing_normalised) {
+    if (!is_forcing_normalised) {
+        return;
+    }
+    if (!is_owner_split) {
         set_forcing_gains<Dim>(bodies, grid, kernel);
+        return;
+    }
+    for (Particle<Dim>& body : bodies) {
+        if (holds_markers_of(grid, body)) {
+            set_forcing_gains<Dim>(std::span<Particle<Dim>>(&body, 1), grid, kernel);
+        }
     }
 }
 
@@ -83,9 +94,9 @@ void set_forcing_gains(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid
 }
 
 template void place_markers<2>(std::span<Particle<2>>, const MacGrid<2>&, const AnyKernel&, long,
-                               double, bool);
+                               double, bool, bool);
 template void place_markers<3>(std::span<Particle<3>>, const MacGrid<3>&, const AnyKernel&, long,
-                               double, bool);
+                               double, bool, bool);
 template void set_forcing_gains<2>(std::span<Particle<2>>, const MacGrid<2>&, const AnyKernel&);
 template void set_forcing_gains<3>(std::span<Particle<3>>, const MacGrid<3>&, const AnyKernel&);
 

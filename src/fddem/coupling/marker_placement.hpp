@@ -17,11 +17,14 @@ namespace fddem {
 /// NumericalError (of time step `step`, ending at `time` [s]) if a body's motion is not finite or
 /// a marker's kernel support leaves the grid's storage.
 /// With `is_forcing_normalised` (coupling.normalised_forcing) also sets each body's
-/// coupling.gains (set_forcing_gains).
+/// coupling.gains (set_forcing_gains); with `is_owner_split` as well (the simultaneous sweep on
+/// a split grid, where a body's owner alone evaluates eq. (15)) only those of the bodies this
+/// rank holds markers of (holds_markers_of, coupling/marker_routes.hpp), the others' left as
+/// they were.
 template <int Dim>
 void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
                    const AnyKernel& kernel, long step, double time,
-                   bool is_forcing_normalised = false);
+                   bool is_forcing_normalised = false, bool is_owner_split = false);
 
 /// Sets each body's coupling.gains, max(1, r_m) per marker and component, from its markers'
 /// offsets as they are (coupling/forcing_gain.hpp).

@@ -150,6 +150,9 @@ MarkerRoutes<Dim>::MarkerRoutes(std::span<const Particle<Dim>> bodies, const Mac
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         const int owner = owner_rank(grid, bodies[b]);
         is_owned_[b] = owner == me ? 1 : 0;
+        if (owner != me && !holds_markers_of(grid, bodies[b])) {
+            continue; // no marker in this rank's cells
+        }
         const std::vector<Vec<Dim>>& positions = bodies[b].coupling.positions;
         for (std::size_t l = 0; l < positions.size(); ++l) {
             const int holder = grid.rank_of_point(positions[l]);
@@ -227,6 +230,9 @@ void hand_over(std::span<Particle<Dim>> bodies, std::span<const int> previous_ow
     };
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         const int from = previous_owners[b];
+        if (from != me && !holds_markers_of(grid, bodies[b])) {
+            continue; // neither sends (not the old owner) nor receives (no marker here now)
+        }
         const int owner = owner_rank(grid, bodies[b]);
         const std::vector<Vec<Dim>>& positions = bodies[b].coupling.positions;
         for (std::size_t l = 0; l < positions.size(); ++l) {

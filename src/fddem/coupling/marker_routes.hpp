@@ -37,6 +37,22 @@ template <int Dim>
     return grid.rank_of_point(grid.domain().wrap(body.centre));
 }
 
+/// Whether this rank may hold some of the markers of `body` (in its cells) or owns it: the
+/// bodies a rank's marker loops visit (interpolation, spreading, the routes). Decided from the
+/// body's centre and marker reach against the rank's block (MacGrid::may_own_near), so it costs
+/// a few operations per body, not a pass over the markers; it errs on the side of yes, and a
+/// body it says no to has no marker in this rank's cells. Always yes on one process.
+template <int Dim>
+[[nodiscard]] bool holds_markers_of(const MacGrid<Dim>& grid, const Particle<Dim>& body) noexcept
+{
+    if (grid.communicator().size() == 1) {
+        return true;
+    }
+    const Vec<Dim> centre = grid.domain().wrap(body.centre);
+    return grid.may_own_near(centre, body.coupling.reach) ||
+           grid.rank_of_point(centre) == grid.communicator().rank();
+}
+
 /// Markers (body, marker), in store and marker order, going to or coming from one rank.
 struct MarkerLink {
     int rank = 0;
@@ -47,7 +63,9 @@ template <int Dim>
 class MarkerRoutes {
 public:
     /// The routes of the markers as placed now (every rank holds every body, in the same order,
-    /// with the same marker positions, so every rank finds the same routes without asking).
+    /// with the same marker positions, so every rank finds the same routes without asking). Only
+    /// the markers of the bodies this rank owns or holds markers of are visited
+    /// (holds_markers_of): the others have none in its cells.
     MarkerRoutes(std::span<const Particle<Dim>> bodies, const MacGrid<Dim>& grid);
 
     /// Whether this rank owns body number `b` (its position in the store).

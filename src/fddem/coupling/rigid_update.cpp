@@ -196,6 +196,9 @@ template <int Dim, class Kernel>
 void spread_correction(const Particle<Dim>& body, const MacGrid<Dim>& grid,
                        const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
 {
+    if (!holds_markers_of(grid, body)) {
+        return; // none of its markers in this rank's cells
+    }
     const MarkerCoupling<Dim>& c = body.coupling;
     for (std::size_t l = 0; l < c.markers.size(); ++l) {
         if (!grid.owns_point(c.positions[l])) {
@@ -314,7 +317,12 @@ double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& g
                           const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
 {
     for (Particle<Dim>& body : bodies) {
-        interpolate_owned<Dim, Kernel>(grid, u, body.coupling); // I(u), all from the same u
+        // I(u), all from the same u. On a split grid a body none of whose markers is in this
+        // rank's cells is skipped: its I(u) here is not read (its owner gathers the values of
+        // the ranks that hold its markers, marker_routes.hpp).
+        if (holds_markers_of(grid, body)) {
+            interpolate_owned<Dim, Kernel>(grid, u, body.coupling);
+        }
     }
     double defect = 0.0;
     std::vector<RigidVelocity<Dim>> motions(bodies.size());

@@ -45,6 +45,7 @@
 #include "fddem/grid/communicator.hpp"
 #include "fddem/grid/grid_partition.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -128,6 +129,48 @@ public:
             const int i = static_cast<int>(std::floor((x[d] - origin_[d]) / spacing_[d]));
             const int clamped = i < 0 ? 0 : (i >= cells_[ax(d)] ? cells_[ax(d)] - 1 : i);
             if (clamped < partition_.block.lo[ax(d)] || clamped >= partition_.block.hi[ax(d)]) {
+                return false;
+            }
+        }
+        return true;
+    }
+    /// Whether some point within `reach` [m] of `centre` along every axis (wrapped along periodic
+    /// axes and clamped into the domain along bounded ones, as owns_point does) may lie in a cell
+    /// this process owns. Errs on the side of yes: one cell more on each side against round-off,
+    /// and yes for a centre that is not finite. A body whose markers are all within `reach` of
+    /// its centre has none in this process's cells when this is false (issue 15: a rank's marker
+    /// loops skip the bodies it does not hold).
+    [[nodiscard]] bool may_own_near(const Vec<Dim>& centre, double reach) const noexcept
+    {
+        for (int d = 0; d < Dim; ++d) {
+            const double n = cells_[ax(d)];
+            const double lo = partition_.block.lo[ax(d)];
+            const double hi = partition_.block.hi[ax(d)];
+            if (lo == 0.0 && hi == n) {
+                continue; // the whole axis
+            }
+            double first = std::floor((centre[d] - reach - origin_[d]) / spacing_[d]) - 1.0;
+            double last = std::floor((centre[d] + reach - origin_[d]) / spacing_[d]) + 1.0;
+            if (!std::isfinite(first) || !std::isfinite(last)) {
+                return true;
+            }
+            if (!is_periodic_[ax(d)]) {
+                first = std::clamp(first, 0.0, n - 1.0);
+                last = std::clamp(last, 0.0, n - 1.0);
+                if (last < lo || first >= hi) {
+                    return false;
+                }
+                continue;
+            }
+            if (last - first + 1.0 >= n) {
+                continue; // the images cover the whole axis
+            }
+            const double shift = std::floor(first / n) * n; // first into [0, n)
+            first -= shift;
+            last -= shift; // < first + n < 2n
+            const bool meets = (first < hi && std::min(last, n - 1.0) >= lo) ||
+                               (last >= n && last - n >= lo); // the part past n wraps to 0
+            if (!meets) {
                 return false;
             }
         }

@@ -3,6 +3,7 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/force_spreading.hpp"
+#include "fddem/coupling/marker_routes.hpp"
 #include "fddem/coupling/rigid_update.hpp"
 #include "fddem/grid/loops.hpp"
 #include "fddem/simulation/step_diagnostics.hpp"
@@ -327,7 +328,13 @@ void OuterIterations<Dim>::collect_iterate(FluidState<Dim>& state, Particles<Dim
         iterate_.push_back({flat(body.omega), body.radius()});
     }
     for (Particle<Dim>& body : bodies) {
-        iterate_.push_back({flat_values<Dim>(body.coupling.lambda), 0.0});
+        // Mixed entry by entry with the weights the measured values give, so a body's λ can be
+        // left out where it is not read: with the simultaneous sweep on a split grid, on a rank
+        // that neither owns the body nor holds any of its markers (the set is fixed within a
+        // step, as the mixing's layout must be).
+        if (!is_simultaneous_ || holds_markers_of(grid_, body)) {
+            iterate_.push_back({flat_values<Dim>(body.coupling.lambda), 0.0});
+        }
     }
     for (int a = 0; a < Dim; ++a) {
         iterate_.push_back({state.u[a].values(), 0.0});

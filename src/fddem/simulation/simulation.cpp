@@ -39,8 +39,8 @@ Simulation<Dim>::Simulation(const CaseConfig& config, const Communicator& ranks)
 {
     clock_.dt = config.time.dt;
     times_.communication_clock = grid_.communicator().seconds_counter();
-    place_markers<Dim>(bodies_.all(), grid_, kernel_, 0, 0.0,
-                       config.coupling.is_forcing_normalised);
+    place_markers<Dim>(bodies_.all(), grid_, kernel_, 0, 0.0, config.coupling.is_forcing_normalised,
+                       is_owner_split());
     set_uniform_body_force(vector_of<Dim>(config.fluid.body_force));
     fill_velocity_ghosts(grid_, bc_, state_.u);
     fill_cell_ghosts(grid_, bc_, state_.p);
@@ -300,18 +300,25 @@ template <int Dim>
 void Simulation<Dim>::move_bodies_and_markers(const TimeLevels& levels)
 {
     const double dt = clock_.dt;
-    measure_hydrodynamic_forces<Dim>(bodies_.all(), properties_.density, levels);
     std::vector<int> owners;
     if (is_owner_split()) {
-        share_loads<Dim>(bodies_.all(), grid_); // only the owners hold every marker's λ
-        for (const Particle<Dim>& body : bodies_) {
+        // Only the owners hold every marker's λ: each measures its bodies, then shares them.
+        const int me = grid_.communicator().rank();
+        for (Particle<Dim>& body : bodies_) {
             owners.push_back(owner_rank(grid_, body));
+            if (owners.back() == me) {
+                measure_hydrodynamic_forces<Dim>(std::span<Particle<Dim>>(&body, 1),
+                                                 properties_.density, levels);
+            }
         }
+        share_loads<Dim>(bodies_.all(), grid_);
+    } else {
+        measure_hydrodynamic_forces<Dim>(bodies_.all(), properties_.density, levels);
     }
     move_bodies<Dim>(bodies_.all(), dt, contacts_ && contacts_->is_paper_coupling); // eq. (17)
     wrap_centres<Dim>(bodies_.all(), grid_.domain()); // re-entering across periodic sides
     place_markers<Dim>(bodies_.all(), grid_, kernel_, clock_.step + 1, clock_.time + dt,
-                       config_.coupling.is_forcing_normalised);
+                       config_.coupling.is_forcing_normalised, is_owner_split());
     if (is_owner_split()) {
         hand_over<Dim>(bodies_.all(), owners, grid_); // to new owners and holders
     }
