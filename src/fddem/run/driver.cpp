@@ -198,6 +198,13 @@ std::string Driver<Dim>::completion_message() const
             ? fmt::format(" (every free body slower than time.rest_speed = {:g} since t = {:g} s)",
                           *config_.time.rest_speed, *rest)
             : std::string();
+    if (config_.time.is_steady) {
+        return fmt::format("fddem: {}: {} pseudo-time steps to t = {:.6g} s, {} outer iterations; "
+                           "{}; {:.2f} s; results in {}",
+                           config_.source_file, sim_.clock().step, sim_.clock().time,
+                           record_.total_outer_iterations, steady_march_verdict(),
+                           record_.wall_seconds, directory_.string());
+    }
     // The run's warnings name at most the first unconverged steps; the last line says how many
     // there were, so that a run whose steps broke down does not read as a clean one.
     const std::string unconverged =
@@ -211,6 +218,41 @@ std::string Driver<Dim>::completion_message() const
                        config_.source_file, sim_.clock().step, sim_.clock().time, settled,
                        record_.total_outer_iterations, unconverged, record_.wall_seconds,
                        directory_.string());
+}
+
+template <int Dim>
+std::string Driver<Dim>::steady_march_verdict() const
+{
+    // What a pseudo-time march (time.steady) reached: the steady test of its last step, and
+    // whether that step's outer iterations solved the equations to simple.tolerance (the steps
+    // on the way need not: their count is only mentioned).
+    const StepReport& last = record_.last;
+    const double tolerance = config_.time.steady_tolerance.value_or(0.0);
+    const bool is_steady = sim_.clock().step > 1 && last.rate_of_change < tolerance;
+    std::string verdict =
+        is_steady ? fmt::format("steady: max|∂u/∂t| L/U² = {:.2e}, below time.steady_tolerance = "
+                                "{:g}",
+                                last.rate_of_change, tolerance)
+                  : fmt::format("warning: NOT steady: max|∂u/∂t| L/U² = {:.2e} at the end, "
+                                "time.steady_tolerance = {:g} (raise time.end or time.max_steps)",
+                                last.rate_of_change, tolerance);
+    if (!last.is_converged) {
+        verdict +=
+            fmt::format("; warning: the last step's outer iterations did not converge "
+                        "(mass residual {:.2e}, momentum residual {:.2e}, simple.tolerance "
+                        "{:g}): raise simple.max_outer_iterations",
+                        last.mass_residual, last.momentum_residual, config_.simple.tolerance);
+    } else {
+        verdict += fmt::format(" (last step: mass residual {:.2e}, momentum residual {:.2e})",
+                               last.mass_residual, last.momentum_residual);
+    }
+    const long earlier = record_.unconverged_steps - (last.is_converged ? 0 : 1);
+    if (earlier > 0) {
+        verdict += fmt::format("; {} of the earlier steps ended at simple.max_outer_iterations, "
+                               "as steps far from steady may",
+                               earlier);
+    }
+    return verdict;
 }
 
 template <int Dim>

@@ -73,6 +73,8 @@ private:
     void write_summary(const std::string& status) const;
     /// The last message of a completed run.
     [[nodiscard]] std::string completion_message() const;
+    /// time.steady: whether the march reached the steady state and solved its last step.
+    [[nodiscard]] std::string steady_march_verdict() const;
     [[nodiscard]] double wall_seconds() const;
     /// The run as one process holds it, for the line samples, summary and checkpoints: the
     /// simulation itself on one process; on several, the mirror on rank 0 after the ranks'

@@ -169,9 +169,13 @@ void watch_step(const StepReport& report, const Clock& clock, const CaseConfig& 
                                         100.0 * overlap_warning, remedy));
         }
     }
+    // A pseudo-time march to a steady state (time.steady) takes steps of growing Δt whose
+    // outer iterations need not converge on the way: its Courant numbers and unconverged steps
+    // are counted but not reported one by one; the last line says what the march reached.
+    const bool is_pseudo_time = config.time.is_steady;
     if (!report.is_converged) {
         ++record.unconverged_steps;
-        if (record.unconverged_steps <= max_reported_unconverged) {
+        if (!is_pseudo_time && record.unconverged_steps <= max_reported_unconverged) {
             monitor.message(fmt::format(
                 "warning: step {} (t = {:g} s): SIMPLE not converged in {} outer iterations "
                 "(mass residual {:.2e}, momentum residual {:.2e}, tolerance {:g}){}",
@@ -181,7 +185,7 @@ void watch_step(const StepReport& report, const Clock& clock, const CaseConfig& 
                                                                      : ""));
         }
     }
-    if (report.courant > courant_warning && !record.has_warned_courant) {
+    if (!is_pseudo_time && report.courant > courant_warning && !record.has_warned_courant) {
         record.has_warned_courant = true;
         monitor.message(fmt::format("warning: step {}: Courant number {:.2f} > {:g}; "
                                     "consider a smaller time.dt",

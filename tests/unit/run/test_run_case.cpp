@@ -121,6 +121,39 @@ TEST(RunCase, TheLastLineCountsTheUnconvergedSteps)
     EXPECT_FALSE(clean.has_message("unconverged, largest")) << clean.messages.back();
 }
 
+TEST(RunCase, ASteadyMarchsLastLineSaysWhetherItReachedTheSteadyState)
+{
+    // time.steady: the pseudo-time steps grow and need not converge on the way, so they get no
+    // warning each; the last line says whether the steady test was met and the last step solved.
+    const std::vector<std::string> steady = {"time.steady=true", "time.steady_tolerance=1e-6",
+                                             "time.end=200", "simple.tolerance=1e-5"};
+    TestMonitor reached;
+    ASSERT_EQ(run_case(read_case_string(cavity_case, "test:cavity", steady),
+                       test::fresh_test_directory("fddem_run_case_") / "cavity", reached)
+                  .outcome,
+              RunResult::Outcome::completed);
+    EXPECT_TRUE(reached.has_message("pseudo-time steps to t = ")) << reached.messages.back();
+    EXPECT_TRUE(reached.has_message("; steady: max|∂u/∂t| L/U² = ")) << reached.messages.back();
+    EXPECT_FALSE(reached.has_message("NOT steady")) << reached.messages.back();
+    EXPECT_FALSE(reached.has_message("Courant number")) << reached.messages.back();
+    // Stopped after 3 steps, and each step cut to one outer iteration: not steady, and the last
+    // step unconverged, both said as warnings on the last line.
+    std::vector<std::string> cut = steady;
+    cut.insert(cut.end(), {"time.max_steps=3", "simple.max_outer_iterations=1"});
+    TestMonitor stopped;
+    ASSERT_EQ(run_case(read_case_string(cavity_case, "test:cavity", cut),
+                       test::fresh_test_directory("fddem_run_case_") / "cavity", stopped)
+                  .outcome,
+              RunResult::Outcome::completed);
+    EXPECT_TRUE(stopped.has_message("warning: NOT steady: max|∂u/∂t| L/U² = "))
+        << stopped.messages.back();
+    EXPECT_TRUE(stopped.has_message("warning: the last step's outer iterations did not converge"))
+        << stopped.messages.back();
+    EXPECT_TRUE(stopped.has_message("2 of the earlier steps ended at simple.max_outer_iterations"))
+        << stopped.messages.back();
+    EXPECT_FALSE(stopped.has_message("SIMPLE not converged")) << stopped.messages.back();
+}
+
 TEST(RunCase, CavityRunDirectoryHoldsTheDocumentedFilesAndTheLidDrivenFlow)
 {
     const fs::path run = test::fresh_test_directory("fddem_run_case_") / "cavity";
