@@ -16,6 +16,7 @@
 // The markers include points around the corner that four ranks share and next to the
 // periodic seam, and each layout is tried with every combination of periodic axes.
 
+#include "fddem/core/errors.hpp"
 #include "fddem/core/phase_timer.hpp"
 #include "fddem/coupling/delta_kernel.hpp"
 #include "fddem/coupling/transfer.hpp"
@@ -203,6 +204,48 @@ TYPED_TEST(SplitGridTest, TrafficCountsEachHaloMessageAndCollective)
     EXPECT_DOUBLE_EQ(pressure, comm.traffic().seconds - after_sum.seconds);
     EXPECT_LE(pressure, times[Phase::pressure]);
     EXPECT_EQ(times.communication[static_cast<std::size_t>(Phase::momentum)], 0.0);
+}
+
+TEST(SplitCommunicator, AllGatherHandsEveryRankEachRanksValuesBitForBitInRankOrder)
+{
+    // Rank r gives r + 1 values (rank 1 none on more than two ranks), the first of them −0;
+    // every rank must hold all of them, in rank order, with their bits (a sum would turn −0
+    // into +0), and count one collective of what it gave.
+    const Communicator world = Communicator::world();
+    const int n = world.size();
+    const int me = world.rank();
+    const auto count = [n](int r) { return n > 2 && r == 1 ? 0 : r + 1; };
+    const auto value = [](int r, int k) { return k == 0 ? -0.0 : 1e3 * r + k + 0.125; };
+    std::vector<int> counts;
+    for (int q = 0; q < n; ++q) {
+        counts.push_back(count(q));
+    }
+    std::vector<double> mine;
+    for (int k = 0; k < count(me); ++k) {
+        mine.push_back(value(me, k));
+    }
+    std::vector<double> all(
+        static_cast<std::size_t>(std::accumulate(counts.begin(), counts.end(), 0)));
+    const Traffic before = world.traffic();
+    world.all_gather(mine, counts, all);
+    const Traffic after = world.traffic();
+    std::size_t at = 0;
+    int n_wrong = 0;
+    for (int q = 0; q < n; ++q) {
+        for (int k = 0; k < count(q); ++k) {
+            const double v = all[at++];
+            n_wrong += (v == value(q, k) && std::signbit(v) == std::signbit(value(q, k))) ? 0 : 1;
+        }
+    }
+    EXPECT_EQ(n_wrong, 0);
+    if (n > 1) {
+        EXPECT_EQ(after.collectives - before.collectives, 1);
+        EXPECT_EQ(after.collective_bytes - before.collective_bytes,
+                  static_cast<long>(mine.size() * sizeof(double)));
+    }
+    // Counts that do not add up to the values are an internal error, on every rank alike.
+    std::vector<double> short_all(all.size() + 1);
+    EXPECT_THROW(world.all_gather(mine, counts, short_all), InternalError);
 }
 
 TEST(SplitCommunicator, AllToAllDeliversEachRanksShareInRankOrderAndIsCounted)

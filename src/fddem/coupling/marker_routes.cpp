@@ -16,8 +16,10 @@ constexpr int tag_to_holders = 72;
 constexpr int tag_hand_over = 73;
 
 /// Makes some values of every body the owner's on every rank: each rank writes, for the bodies
-/// it owns, `size(body)` values by `pack`, and zeros for the others; the sum over the ranks then
-/// holds the owner's values exactly (x + 0 = x), read back by `unpack`.
+/// it owns, `size(body)` values by `pack`, in store order; one gather over the ranks
+/// (Communicator::all_gather) hands every rank every owner's values, bit for bit, read back by
+/// `unpack` in the owners' rank order. Each rank receives the values once (a sum with zeros
+/// from the non-owners received them once from every rank: the ranks' number times over).
 template <int Dim, class Size, class Pack, class Unpack>
 void share_from_owners(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid, Size size,
                        Pack pack, Unpack unpack)
@@ -26,25 +28,36 @@ void share_from_owners(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid
     if (ranks.size() == 1) {
         return;
     }
-    std::size_t total = 0;
-    for (const Particle<Dim>& body : bodies) {
-        total += size(body);
+    const auto n_ranks = static_cast<std::size_t>(ranks.size());
+    // Every rank knows every body's owner: the bodies of each rank, in store order.
+    std::vector<std::vector<std::size_t>> owned(n_ranks);
+    std::vector<int> counts(n_ranks, 0);
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const auto owner = static_cast<std::size_t>(owner_rank(grid, bodies[b]));
+        owned[owner].push_back(b);
+        counts[owner] += static_cast<int>(size(bodies[b]));
     }
-    std::vector<double> values(total, 0.0);
+    const auto me = static_cast<std::size_t>(ranks.rank());
+    std::vector<double> mine(static_cast<std::size_t>(counts[me]));
     std::size_t at = 0;
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
+    for (const std::size_t b : owned[me]) {
         const std::size_t n = size(bodies[b]);
-        if (owner_rank(grid, bodies[b]) == ranks.rank()) {
-            pack(b, std::span<double>(values).subspan(at, n));
-        }
+        pack(b, std::span<double>(mine).subspan(at, n));
         at += n;
     }
-    ranks.sum(std::span<double>(values));
+    std::size_t total = 0;
+    for (const int c : counts) {
+        total += static_cast<std::size_t>(c);
+    }
+    std::vector<double> all(total);
+    ranks.all_gather(mine, counts, all);
     at = 0;
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-        const std::size_t n = size(bodies[b]);
-        unpack(b, std::span<const double>(values).subspan(at, n));
-        at += n;
+    for (const std::vector<std::size_t>& list : owned) {
+        for (const std::size_t b : list) {
+            const std::size_t n = size(bodies[b]);
+            unpack(b, std::span<const double>(all).subspan(at, n));
+            at += n;
+        }
     }
 }
 

@@ -64,18 +64,44 @@ void interpolate_owned(const MacGrid<Dim>& grid, const FaceField<Dim>& u, Marker
 }
 
 /// I(u) at every marker of the body, the same on every rank of a split grid (issue 15): each
-/// marker is interpolated by the rank that owns the cell it sits in, the others give zero, and
-/// the sum over the ranks is exactly the owner's value (x + 0 = x), so U and ω of eqs. (13)–(14)
-/// come out the same on every rank and as on one process. One message per body and outer
-/// iteration with the sequential sweep (the simultaneous one sends the markers to their bodies'
-/// owners instead: coupling/marker_routes.hpp; docs/parallel.md).
+/// marker is interpolated by the rank that owns the cell it sits in, and one gather over the
+/// ranks (Communicator::all_gather) hands every rank every marker's value as its holder computed
+/// it, so U and ω of eqs. (13)–(14) come out the same on every rank and as on one process. One
+/// collective per body and outer iteration with the sequential sweep (the simultaneous one sends
+/// the markers to their bodies' owners instead: coupling/marker_routes.hpp; docs/parallel.md).
 template <int Dim, class Kernel>
 void interpolate_at_markers(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
                             MarkerCoupling<Dim>& c)
 {
-    interpolate_owned<Dim, Kernel>(grid, u, c);
-    if (grid.communicator().size() > 1) {
-        grid.communicator().sum(flat_values<Dim>(c.fluid));
+    const Communicator& ranks = grid.communicator();
+    if (ranks.size() == 1) {
+        interpolate_owned<Dim, Kernel>(grid, u, c);
+        return;
+    }
+    const auto n_ranks = static_cast<std::size_t>(ranks.size());
+    const auto me = ranks.rank();
+    std::vector<int> holders(c.markers.size());
+    std::vector<int> counts(n_ranks, 0);
+    std::vector<double> mine;
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        holders[l] = grid.rank_of_point(c.positions[l]);
+        counts[static_cast<std::size_t>(holders[l])] += Dim;
+        if (holders[l] == me) {
+            const Vec<Dim> v = interpolate_velocity<Dim, Kernel>(grid, u, c.positions[l]);
+            mine.insert(mine.end(), v.data(), v.data() + Dim);
+        }
+    }
+    std::vector<double> all(Dim * c.markers.size());
+    ranks.all_gather(mine, counts, all);
+    std::vector<std::size_t> at(n_ranks, 0); // where each rank's values start in `all`
+    for (std::size_t q = 1; q < n_ranks; ++q) {
+        at[q] = at[q - 1] + static_cast<std::size_t>(counts[q - 1]);
+    }
+    for (std::size_t l = 0; l < c.markers.size(); ++l) {
+        std::size_t& k = at[static_cast<std::size_t>(holders[l])];
+        for (int d = 0; d < Dim; ++d) {
+            c.fluid[l][d] = all[k++];
+        }
     }
 }
 

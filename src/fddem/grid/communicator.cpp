@@ -255,6 +255,33 @@ std::vector<int> Communicator::all_gather(std::span<const int> local) const
     return all;
 }
 
+void Communicator::all_gather(std::span<const double> local, std::span<const int> counts,
+                              std::span<double> all) const
+{
+    const auto n_ranks = static_cast<std::size_t>(size());
+    if (counts.size() != n_ranks) {
+        throw InternalError("Communicator::all_gather: one count per rank is needed");
+    }
+    std::vector<int> offsets(n_ranks, 0);
+    for (std::size_t q = 1; q < n_ranks; ++q) {
+        offsets[q] = offsets[q - 1] + counts[q - 1];
+    }
+    const auto own = static_cast<std::size_t>(rank());
+    if (static_cast<std::size_t>(counts[own]) != local.size() ||
+        static_cast<std::size_t>(offsets.back() + counts.back()) != all.size()) {
+        throw InternalError("Communicator::all_gather: the counts do not match the values");
+    }
+    if (!mpi_) {
+        std::copy(local.begin(), local.end(), all.begin());
+        return;
+    }
+    const ScopedSeconds timer(mpi_->sent.seconds);
+    count_collective(local.size() * sizeof(double));
+    check(MPI_Allgatherv(local.data(), static_cast<int>(local.size()), MPI_DOUBLE, all.data(),
+                         counts.data(), offsets.data(), MPI_DOUBLE, mpi_->comm),
+          "MPI_Allgatherv");
+}
+
 void Communicator::all_to_all(std::span<const double> send, std::span<const int> send_counts,
                               std::span<double> receive, std::span<const int> receive_counts) const
 {

@@ -97,6 +97,14 @@ public:
     /// On this process alone, `local` itself.
     [[nodiscard]] std::vector<int> all_gather(std::span<const int> local) const;
 
+    /// Every rank's `local` values, rank after rank, into `all` (MPI_Allgatherv): rank q gives
+    /// counts[q] values, the same counts on every rank, and `all` holds their sum. Nothing is
+    /// added, so each value arrives bit for bit (a sum with zeros from the other ranks, as
+    /// sum() would do for values only one rank holds, costs every rank size() times the
+    /// values and turns −0 into +0). On this process alone, `local` is copied.
+    void all_gather(std::span<const double> local, std::span<const int> counts,
+                    std::span<double> all) const;
+
     /// Personalised all-to-all (MPI_Alltoallv): `send` holds, one after the other in rank
     /// order, send_counts[q] values for each rank q; `receive` gets receive_counts[q] values from
     /// each rank q, in rank order. The counts must agree pairwise across the ranks (what q sends
