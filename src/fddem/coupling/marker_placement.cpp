@@ -14,15 +14,48 @@
 namespace fddem {
 namespace {
 
+/// Numbered from 1 in messages, as in `--set bodies.N.key=value`.
+template <int Dim>
+std::string name_of(const Particle<Dim>& body)
+{
+    return "body " + std::to_string(body.id + 1);
+}
+
+/// Throws NumericalError if the body's motion is not finite (every rank alike).
+template <int Dim>
+void check_finite(const Particle<Dim>& body, long step, double time)
+{
+    if (!body.centre.allFinite() || !body.velocity.allFinite()) {
+        throw NumericalError(step, time, name_of(body),
+                             "the body's motion is not finite: the coupling has blown up");
+    }
+}
+
+/// Whether a marker of `body` may come within two cells of a bounded side of the domain (its
+/// centre and marker reach against the sides), the only place where place() can find a kernel
+/// support beyond the ghost layers: a point two cells inside the domain has the support of the
+/// widest kernel (half width 2 h) within the box and its n_ghost = 2 ghost layers.
+template <int Dim>
+bool may_near_bounded_side(const MacGrid<Dim>& grid, const Particle<Dim>& body)
+{
+    for (int d = 0; d < Dim; ++d) {
+        if (grid.is_periodic(d)) {
+            continue; // markers are wrapped into the box
+        }
+        const double margin = 2.0 * grid.spacing(d) + body.coupling.reach;
+        if (body.centre[d] - margin < grid.origin()[d] ||
+            body.centre[d] + margin > grid.origin()[d] + grid.length()[d]) {
+            return true;
+        }
+    }
+    return false;
+}
+
 template <int Dim, class Kernel>
 void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time)
 {
-    // Numbered from 1 in messages, as in `--set bodies.N.key=value`.
-    const std::string who = "body " + std::to_string(body.id + 1);
-    if (!body.centre.allFinite() || !body.velocity.allFinite()) {
-        throw NumericalError(step, time, who,
-                             "the body's motion is not finite: the coupling has blown up");
-    }
+    check_finite(body, step, time);
+    const std::string who = name_of(body);
     MarkerCoupling<Dim>& c = body.coupling;
     c.fluid_second_moment = inertia_in_world<Dim>(body.orientation, c.body_second_moment);
     const PeriodicDomain<Dim> domain = grid.domain();
@@ -51,12 +84,23 @@ void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time
 template <int Dim>
 void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
                    const AnyKernel& kernel, long step, double time, bool is_forcing_normalised,
-                   bool is_owner_split)
+                   bool is_owner_split, std::span<const char> also_place)
 {
     std::visit(
         [&](auto k) {
-            for (Particle<Dim>& body : bodies) {
-                place<Dim, decltype(k)>(body, grid, step, time);
+            for (std::size_t b = 0; b < bodies.size(); ++b) {
+                Particle<Dim>& body = bodies[b];
+                // With the owner split a rank places only what it reads, and where the check
+                // of the kernel support could fail it places every body alike, so that no rank
+                // throws while another waits (the verdict is then every rank's).
+                const bool is_placed = !is_owner_split || holds_markers_of(grid, body) ||
+                                       (b < also_place.size() && also_place[b] != 0) ||
+                                       may_near_bounded_side(grid, body);
+                if (is_placed) {
+                    place<Dim, decltype(k)>(body, grid, step, time);
+                } else {
+                    check_finite(body, step, time);
+                }
             }
         },
         kernel);
@@ -94,9 +138,9 @@ void set_forcing_gains(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid
 }
 
 template void place_markers<2>(std::span<Particle<2>>, const MacGrid<2>&, const AnyKernel&, long,
-                               double, bool, bool);
+                               double, bool, bool, std::span<const char>);
 template void place_markers<3>(std::span<Particle<3>>, const MacGrid<3>&, const AnyKernel&, long,
-                               double, bool, bool);
+                               double, bool, bool, std::span<const char>);
 template void set_forcing_gains<2>(std::span<Particle<2>>, const MacGrid<2>&, const AnyKernel&);
 template void set_forcing_gains<3>(std::span<Particle<3>>, const MacGrid<3>&, const AnyKernel&);
 

@@ -17,14 +17,22 @@ namespace fddem {
 /// NumericalError (of time step `step`, ending at `time` [s]) if a body's motion is not finite or
 /// a marker's kernel support leaves the grid's storage.
 /// With `is_forcing_normalised` (coupling.normalised_forcing) also sets each body's
-/// coupling.gains (set_forcing_gains); with `is_owner_split` as well (the simultaneous sweep on
-/// a split grid, where a body's owner alone evaluates eq. (15)) only those of the bodies this
-/// rank holds markers of (holds_markers_of, coupling/marker_routes.hpp), the others' left as
-/// they were.
+/// coupling.gains (set_forcing_gains).
+///
+/// With `is_owner_split` (the simultaneous sweep on a split grid: a body's markers are read
+/// only by its owner and the ranks holding some of them, coupling/marker_routes.hpp) a rank
+/// places only the bodies it owns or may hold markers of (holds_markers_of), those
+/// `also_place` marks (indexed as `bodies`: the ones it owned before a move, whose markers it
+/// hands over from their new places), and every body whose markers may come near a bounded
+/// side of the domain (there the check above can fail, and it must fail on every rank alike);
+/// only the first get gains. The others keep the offsets and positions of an earlier
+/// placement: they are not read on this rank (Simulation::share_marker_state places every body
+/// before a checkpoint writes them). The motion of every body is checked on every rank.
 template <int Dim>
 void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
                    const AnyKernel& kernel, long step, double time,
-                   bool is_forcing_normalised = false, bool is_owner_split = false);
+                   bool is_forcing_normalised = false, bool is_owner_split = false,
+                   std::span<const char> also_place = {});
 
 /// Sets each body's coupling.gains, max(1, r_m) per marker and component, from its markers'
 /// offsets as they are (coupling/forcing_gain.hpp).

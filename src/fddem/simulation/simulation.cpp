@@ -301,10 +301,12 @@ void Simulation<Dim>::move_bodies_and_markers(const TimeLevels& levels)
 {
     const double dt = clock_.dt;
     std::vector<int> owners;
+    std::vector<char> held_before; // the bodies whose markers this rank may hand over
     if (is_owner_split()) {
         // Only the owners hold every marker's λ: each measures its bodies, then shares them.
         const int me = grid_.communicator().rank();
         for (Particle<Dim>& body : bodies_) {
+            held_before.push_back(holds_markers_of(grid_, body) ? 1 : 0);
             owners.push_back(owner_rank(grid_, body));
             if (owners.back() == me) {
                 measure_hydrodynamic_forces<Dim>(std::span<Particle<Dim>>(&body, 1),
@@ -318,7 +320,7 @@ void Simulation<Dim>::move_bodies_and_markers(const TimeLevels& levels)
     move_bodies<Dim>(bodies_.all(), dt, contacts_ && contacts_->is_paper_coupling); // eq. (17)
     wrap_centres<Dim>(bodies_.all(), grid_.domain()); // re-entering across periodic sides
     place_markers<Dim>(bodies_.all(), grid_, kernel_, clock_.step + 1, clock_.time + dt,
-                       config_.coupling.is_forcing_normalised, is_owner_split());
+                       config_.coupling.is_forcing_normalised, is_owner_split(), held_before);
     if (is_owner_split()) {
         hand_over<Dim>(bodies_.all(), owners, grid_); // to new owners and holders
     }
@@ -336,6 +338,9 @@ template <int Dim>
 void Simulation<Dim>::share_marker_state()
 {
     if (is_owner_split()) {
+        // Each rank placed only the bodies it reads (place_markers): every body placed here,
+        // from the same state on every rank, for what a checkpoint writes.
+        place_markers<Dim>(bodies_.all(), grid_, kernel_, clock_.step, clock_.time);
         share_markers<Dim>(bodies_.all(), grid_);
     }
 }
