@@ -438,20 +438,110 @@ Box<Dim> whole_unknown_faces(const MacGrid<Dim>& grid, int axis)
     return box;
 }
 
-/// Adds up `values` over the grid's ranks in place (nothing to do on one process).
-void sum_over_ranks(const Communicator& ranks, std::vector<double>& values)
+/// Calls f(i) for every index of `box` in a fixed order (the first axis fastest), on this
+/// thread: the order in which a rank packs and unpacks its share of a coarse level.
+template <int Dim, class F>
+void for_each_in_order(const Box<Dim>& box, F&& f)
 {
-    ranks.sum(std::span<double>(values));
+    if (box.size() == 0) {
+        return;
+    }
+    Index<Dim> i = box.lo;
+    for (;;) {
+        f(i);
+        std::size_t d = 0;
+        for (; d < i.size(); ++d) {
+            if (++i[d] < box.hi[d]) {
+                break;
+            }
+            i[d] = box.lo[d];
+        }
+        if (d == i.size()) {
+            return;
+        }
+    }
+}
+
+/// The unknowns of the first coarse level that the members of `part` merge into: the only ones
+/// aggregate_part and restrict_residual write for it.
+template <int Dim>
+Box<Dim> coarse_part_box(const StencilView<Dim>& fine, const LevelPart<Dim>& part)
+{
+    Box<Dim> box;
+    for (std::size_t d = 0; d < box.lo.size(); ++d) {
+        box.lo[d] = part.offset[d] / 2;
+        box.hi[d] = (part.offset[d] + fine.n[d] - 1) / 2 + 1;
+    }
+    return box;
+}
+
+/// Every rank's coarse_part_box, in rank order (one gather of 2·Dim integers a rank).
+template <int Dim>
+std::vector<Box<Dim>> gather_part_boxes(const Communicator& ranks, const Box<Dim>& mine)
+{
+    std::vector<int> bounds(mine.lo.begin(), mine.lo.end());
+    bounds.insert(bounds.end(), mine.hi.begin(), mine.hi.end());
+    const std::vector<int> all = ranks.all_gather(bounds);
+    std::vector<Box<Dim>> boxes(static_cast<std::size_t>(ranks.size()));
+    for (std::size_t r = 0; r < boxes.size(); ++r) {
+        for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+            boxes[r].lo[d] = all[r * 2 * Dim + d];
+            boxes[r].hi[d] = all[r * 2 * Dim + Dim + d];
+        }
+    }
+    return boxes;
+}
+
+/// Adds up the ranks' shares of some arrays of the first coarse level `layout` (each rank's
+/// share zero outside its box, `boxes[rank]`), in rank order, in place. Each rank gives only
+/// its box's values, and one gather (Communicator::all_gather) brings every rank each box once:
+/// about the whole level per rank. A sum of the whole arrays (Communicator::sum, before the
+/// twenty-fifth session) brought the whole level from every rank, the ranks' number times it,
+/// at every V-cycle. The totals are that sum's bit for bit (the zeros it added change nothing,
+/// up to the sign of a zero).
+template <int Dim>
+void sum_coarse_parts(const Communicator& ranks, std::span<const Box<Dim>> boxes,
+                      const CoarseLevel<Dim>& layout, std::span<std::vector<double>* const> arrays)
+{
+    const auto me = static_cast<std::size_t>(ranks.rank());
+    std::vector<int> counts;
+    for (const Box<Dim>& box : boxes) {
+        counts.push_back(static_cast<int>(box.size() * arrays.size()));
+    }
+    std::vector<double> mine;
+    mine.reserve(static_cast<std::size_t>(counts[me]));
+    for (const std::vector<double>* values : arrays) {
+        for_each_in_order<Dim>(
+            boxes[me], [&](const Index<Dim>& c) { mine.push_back((*values)[layout.offset(c)]); });
+    }
+    std::size_t total = 0;
+    for (const int c : counts) {
+        total += static_cast<std::size_t>(c);
+    }
+    std::vector<double> all(total);
+    ranks.all_gather(mine, counts, all);
+    for (std::vector<double>* values : arrays) {
+        std::fill(values->begin(), values->end(), 0.0);
+    }
+    std::size_t at = 0;
+    for (const Box<Dim>& box : boxes) {
+        for (std::vector<double>* values : arrays) {
+            for_each_in_order<Dim>(
+                box, [&](const Index<Dim>& c) { (*values)[layout.offset(c)] += all[at++]; });
+        }
+    }
 }
 
 /// The multigrid's levels below `fine`. On a split grid (`part` a part of the whole level)
 /// every rank builds its share of the whole first coarse level, the shares are summed over the
-/// ranks, and every rank then holds the same whole hierarchy below it (a redundant coarse
-/// solve: the levels are 2^Dim and more times smaller than the fine grid, and the result is
-/// the one-process hierarchy, up to the order of additions, whatever the layout).
+/// ranks (sum_coarse_parts, `boxes` every rank's share), and every rank then holds the same
+/// whole hierarchy below it (a redundant coarse solve: the levels are 2^Dim and more times
+/// smaller than the fine grid, and the result is the one-process hierarchy, up to the order of
+/// additions, whatever the layout).
 template <int Dim>
 void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
-                  const LevelPart<Dim>& part, std::vector<CoarseLevel<Dim>>& levels)
+                  const LevelPart<Dim>& part, std::span<const Box<Dim>> boxes,
+                  std::vector<CoarseLevel<Dim>>& levels)
 {
     if (!grid.communicator().uses_mpi()) {
         build_coarse_levels(fine, levels);
@@ -466,10 +556,11 @@ void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
     }
     CoarseLevel<Dim>& first = levels.front();
     aggregate_part(fine, part, first);
-    sum_over_ranks(grid.communicator(), first.diagonal);
+    std::vector<std::vector<double>*> arrays{&first.diagonal};
     for (auto& a : first.a_nb) {
-        sum_over_ranks(grid.communicator(), a);
+        arrays.push_back(&a);
     }
+    sum_coarse_parts<Dim>(grid.communicator(), boxes, first, arrays);
     extend_coarse_levels(levels);
 }
 
@@ -497,9 +588,12 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     const Box<Dim> whole = whole_unknown_faces(grid, axis);
     const LevelPart<Dim> part{box.lo - whole.lo, whole.hi - whole.lo};
     const bool is_split = grid.communicator().uses_mpi();
+    const std::vector<Box<Dim>> boxes =
+        is_split ? gather_part_boxes<Dim>(grid.communicator(), coarse_part_box<Dim>(fine, part))
+                 : std::vector<Box<Dim>>();
     // Rebuilt at every solve: a hierarchy kept for the whole time step (the coefficients
     // change between outer iterations) made the eighteen-disk case blow up at a collision.
-    build_levels(grid, fine, part, system.coarse_levels);
+    build_levels<Dim>(grid, fine, part, boxes, system.coarse_levels);
     const int pre_sweeps = settings.sweeps / 2;
     const int post_sweeps = settings.sweeps - pre_sweeps;
     for (int cycle = 0; cycle < settings.cycles; ++cycle) {
@@ -513,7 +607,10 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                 std::fill(coarse.x.begin(), coarse.x.end(), 0.0);
             }
             restrict_residual(fine, part, scaled, system.a_p.data(), alpha, u.data(), coarse);
-            sum_over_ranks(grid.communicator(), coarse.rhs);
+            if (is_split) {
+                std::vector<double>* const rhs[] = {&coarse.rhs};
+                sum_coarse_parts<Dim>(grid.communicator(), boxes, coarse, rhs);
+            }
             coarse_v_cycle(system.coarse_levels, 0, 2);
             add_coarse_correction(box, fine, part, coarse, u.data());
             HaloExchange<Dim>(grid).fill(u);
