@@ -46,6 +46,33 @@ struct MarkerCoupling {
     /// it (which ranks hold some of the markers: coupling/marker_routes.hpp).
     double reach = 0.0;
 
+    /// Whether the per-marker arrays (offsets … lambda_star) are held: always, except on a rank
+    /// of a split grid that neither owns the body nor holds any of its markers (release_arrays;
+    /// coupling/marker_placement.hpp).
+    [[nodiscard]] bool has_arrays() const noexcept { return positions.size() == markers.size(); }
+    /// Sizes the per-marker arrays to the markers again, I(u), λ and λ* zero, if released.
+    void allocate_arrays()
+    {
+        if (has_arrays()) {
+            return;
+        }
+        const std::size_t n = markers.size();
+        offsets.assign(n, Vec<Dim>::Zero());
+        positions.assign(n, Vec<Dim>::Zero());
+        fluid.assign(n, Vec<Dim>::Zero());
+        lambda.assign(n, Vec<Dim>::Zero());
+        lambda_star.assign(n, Vec<Dim>::Zero());
+    }
+    /// Frees the per-marker arrays (and the gains): their memory is then not held on a rank
+    /// that does not read them.
+    void release_arrays()
+    {
+        for (auto* values : {&offsets, &positions, &fluid, &lambda, &lambda_star, &gains}) {
+            values->clear();
+            values->shrink_to_fit();
+        }
+    }
+
     MarkerCoupling() = default;
     explicit MarkerCoupling(MarkerSet<Dim> set)
         : markers(std::move(set)), offsets(markers.size()), positions(markers.size()),

@@ -51,30 +51,39 @@ bool may_near_bounded_side(const MacGrid<Dim>& grid, const Particle<Dim>& body)
     return false;
 }
 
+/// Places the markers of `body` (`is_stored`) or only checks where they would be: each marker's
+/// world offset and position, and the check that its kernel support stays within the grid's
+/// storage.
 template <int Dim, class Kernel>
-void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time)
+void place(Particle<Dim>& body, const MacGrid<Dim>& grid, long step, double time,
+           bool is_stored = true)
 {
     check_finite(body, step, time);
-    const std::string who = name_of(body);
     MarkerCoupling<Dim>& c = body.coupling;
-    c.fluid_second_moment = inertia_in_world<Dim>(body.orientation, c.body_second_moment);
+    if (is_stored) {
+        c.fluid_second_moment = inertia_in_world<Dim>(body.orientation, c.body_second_moment);
+    }
     const PeriodicDomain<Dim> domain = grid.domain();
     // Checked against the one-process storage, so that every rank of a split grid gives the
     // same verdict (the bodies are the same on every rank): a marker that fits there fits in
     // the storage of the rank that owns it, the only one that interpolates and spreads it.
     const Box<Dim> storage = grid.whole_storage_box();
     for (std::size_t l = 0; l < c.markers.size(); ++l) {
-        c.offsets[l] = to_world<Dim>(body.orientation, c.markers.offsets[l]);
+        const Vec<Dim> offset = to_world<Dim>(body.orientation, c.markers.offsets[l]);
         // Each marker on its own image in the box: a body across a periodic side has markers
         // on both sides, and every marker's kernel support stays within the ghost layers.
-        c.positions[l] = domain.wrap(body.centre + c.offsets[l]);
-        if (!fits_in_box<Dim, Kernel>(grid, storage, c.positions[l])) {
-            throw NumericalError(step, time, who,
+        const Vec<Dim> position = domain.wrap(body.centre + offset);
+        if (!fits_in_box<Dim, Kernel>(grid, storage, position)) {
+            throw NumericalError(step, time, name_of(body),
                                  fmt::format("a marker of the body left the box (its kernel "
                                              "support reaches past the ghost layers): centre "
                                              "({:.6g}), velocity ({:.6g})",
                                              fmt::join(body.centre, ", "),
                                              fmt::join(body.velocity, ", ")));
+        }
+        if (is_stored) {
+            c.offsets[l] = offset;
+            c.positions[l] = position;
         }
     }
 }
@@ -90,14 +99,19 @@ void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
         [&](auto k) {
             for (std::size_t b = 0; b < bodies.size(); ++b) {
                 Particle<Dim>& body = bodies[b];
-                // With the owner split a rank places only what it reads, and where the check
-                // of the kernel support could fail it places every body alike, so that no rank
-                // throws while another waits (the verdict is then every rank's).
+                // With the owner split a rank places only what it reads; where the check of
+                // the kernel support could fail every rank makes it for every body alike, so
+                // that no rank throws while another waits (the verdict is then every rank's).
                 const bool is_placed = !is_owner_split || holds_markers_of(grid, body) ||
-                                       (b < also_place.size() && also_place[b] != 0) ||
-                                       may_near_bounded_side(grid, body);
+                                       (b < also_place.size() && also_place[b] != 0);
                 if (is_placed) {
+                    body.coupling.allocate_arrays(); // a body this rank did not hold before
                     place<Dim, decltype(k)>(body, grid, step, time);
+                    continue;
+                }
+                body.coupling.release_arrays(); // not read here until it is placed again
+                if (may_near_bounded_side(grid, body)) {
+                    place<Dim, decltype(k)>(body, grid, step, time, false); // the check alone
                 } else {
                     check_finite(body, step, time);
                 }

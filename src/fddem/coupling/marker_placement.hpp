@@ -21,13 +21,17 @@ namespace fddem {
 ///
 /// With `is_owner_split` (the simultaneous sweep on a split grid: a body's markers are read
 /// only by its owner and the ranks holding some of them, coupling/marker_routes.hpp) a rank
-/// places only the bodies it owns or may hold markers of (holds_markers_of), those
-/// `also_place` marks (indexed as `bodies`: the ones it owned before a move, whose markers it
-/// hands over from their new places), and every body whose markers may come near a bounded
-/// side of the domain (there the check above can fail, and it must fail on every rank alike);
-/// only the first get gains. The others keep the offsets and positions of an earlier
-/// placement: they are not read on this rank (Simulation::share_marker_state places every body
-/// before a checkpoint writes them). The motion of every body is checked on every rank.
+/// places only the bodies it owns or may hold markers of (holds_markers_of) and those
+/// `also_place` marks (indexed as `bodies`: the ones it held before a move, whose markers it
+/// may hand over from their new places); only the first get gains. For every other body whose
+/// markers may come near a bounded side of the domain it makes the check above without storing
+/// anything (there the check can fail, and it must fail on every rank alike). The others'
+/// per-marker arrays are released
+/// (MarkerCoupling::release_arrays): no rank reads them there, and a rank's memory for markers
+/// then follows the bodies it holds, not all of them (Simulation::share_marker_state sizes and
+/// places every body before a checkpoint writes them). A body placed again gets its arrays
+/// back, I(u), λ and λ* zero until its owner hands them over (hand_over). The motion of every
+/// body is checked on every rank.
 template <int Dim>
 void place_markers(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
                    const AnyKernel& kernel, long step, double time,

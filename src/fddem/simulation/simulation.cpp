@@ -338,8 +338,11 @@ template <int Dim>
 void Simulation<Dim>::share_marker_state()
 {
     if (is_owner_split()) {
-        // Each rank placed only the bodies it reads (place_markers): every body placed here,
-        // from the same state on every rank, for what a checkpoint writes.
+        // Each rank placed only the bodies it reads (place_markers): every body's arrays sized
+        // and placed here, from the same state on every rank, for what a checkpoint writes.
+        for (Particle<Dim>& body : bodies_) {
+            body.coupling.allocate_arrays();
+        }
         place_markers<Dim>(bodies_.all(), grid_, kernel_, clock_.step, clock_.time);
         share_markers<Dim>(bodies_.all(), grid_);
     }
