@@ -12,9 +12,9 @@
 ///   markers of all the bodies they share. Ranks that share no body exchange nothing.
 /// - Every rank still holds every body's record. What the owners computed is made every rank's
 ///   by one gather of the owners' values (Communicator::all_gather: exactly the owner's
-///   values, each received once): the bodies' motion (share_motion, every outer iteration), their hydrodynamic
-///   loads (share_loads, every step) and, for a checkpoint or the outputs, the marker arrays
-///   (share_markers). The first two are a few numbers per body; the last is sent only when
+///   values, each received once): the bodies' motion (share_motion, every outer iteration), their
+///   hydrodynamic loads (share_loads, every step) and, for a checkpoint or the outputs, the marker
+///   arrays (share_markers). The first two are a few numbers per body; the last is sent only when
 ///   asked for.
 ///
 /// The marker lists the owner assembles are, value for value, those of one process, so the
