@@ -21,11 +21,23 @@ std::string name_of(const Particle<Dim>& body)
     return "body " + std::to_string(body.id + 1);
 }
 
-/// Throws NumericalError if the body's motion is not finite (every rank alike).
+/// Whether the body's orientation and spin are finite (those its markers' offsets follow).
+template <int Dim>
+bool is_turn_finite(const Particle<Dim>& body)
+{
+    if constexpr (Dim == 2) {
+        return std::isfinite(body.orientation) && std::isfinite(body.omega);
+    } else {
+        return body.orientation.coeffs().allFinite() && body.omega.allFinite();
+    }
+}
+
+/// Throws NumericalError if the body's motion is not finite (every rank alike: a rank that does
+/// not place the body must not pass a state that makes another's placement throw).
 template <int Dim>
 void check_finite(const Particle<Dim>& body, long step, double time)
 {
-    if (!body.centre.allFinite() || !body.velocity.allFinite()) {
+    if (!body.centre.allFinite() || !body.velocity.allFinite() || !is_turn_finite(body)) {
         throw NumericalError(step, time, name_of(body),
                              "the body's motion is not finite: the coupling has blown up");
     }

@@ -19,11 +19,13 @@
 
 #include "fddem/fluid/momentum.hpp"
 
+#include "fddem/core/errors.hpp"
 #include "fddem/grid/halo_exchange.hpp"
 #include "fddem/grid/loops.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <type_traits>
 
@@ -506,7 +508,11 @@ void sum_coarse_parts(const Communicator& ranks, std::span<const Box<Dim>> boxes
     const auto me = static_cast<std::size_t>(ranks.rank());
     std::vector<int> counts;
     for (const Box<Dim>& box : boxes) {
-        counts.push_back(static_cast<int>(box.size() * arrays.size()));
+        const std::size_t count = box.size() * arrays.size();
+        if (count > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+            throw InternalError("sum_coarse_parts: a part of more than 2^31 values");
+        }
+        counts.push_back(static_cast<int>(count));
     }
     std::vector<double> mine;
     mine.reserve(static_cast<std::size_t>(counts[me]));

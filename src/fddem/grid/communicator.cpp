@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -263,7 +264,13 @@ void Communicator::all_gather(std::span<const double> local, std::span<const int
         throw InternalError("Communicator::all_gather: one count per rank is needed");
     }
     std::vector<int> offsets(n_ranks, 0);
+    long long total = counts.empty() ? 0 : counts[0];
     for (std::size_t q = 1; q < n_ranks; ++q) {
+        total += counts[q];
+        if (total > std::numeric_limits<int>::max()) {
+            throw InternalError("Communicator::all_gather: more than 2^31 values (MPI's int "
+                                "counts); gather them in pieces");
+        }
         offsets[q] = offsets[q - 1] + counts[q - 1];
     }
     const auto own = static_cast<std::size_t>(rank());

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -59,6 +60,16 @@ TEST(MarkerPlacement, ABodyOutOfTheBoxIsANumericalErrorNamingIt)
         EXPECT_EQ(e.step(), 12);
     }
     bodies[1].centre = Vec<2>(0.5, std::nan(""));
+    EXPECT_THROW(place_markers<2>(bodies, unit_box(), AnyKernel{HatKernel{}}, 12, 0.3),
+                 NumericalError);
+    // A turn that is not finite is caught from the motion alone, as a centre is: on a split
+    // grid a rank that does not place the body must stop where a placing rank would.
+    bodies[1].centre = Vec<2>(0.5, 0.5);
+    bodies[1].omega = std::nan("");
+    EXPECT_THROW(place_markers<2>(bodies, unit_box(), AnyKernel{HatKernel{}}, 12, 0.3),
+                 NumericalError);
+    bodies[1].omega = 0.0;
+    bodies[1].orientation = std::numeric_limits<double>::infinity();
     EXPECT_THROW(place_markers<2>(bodies, unit_box(), AnyKernel{HatKernel{}}, 12, 0.3),
                  NumericalError);
 }
