@@ -534,17 +534,18 @@ std::vector<KeySpec> case_schema()
                           "corrects (docs/method.md §5, the stall in contact). false: what is "
                           "spread into a wall's ghosts is dropped (fddem before 2026-11-27)."),
                       &CaseConfig::coupling, &CouplingConfig::is_adjoint_at_walls));
-    s.push_back(bound(key("coupling", "body_sweep", T::string, none, "\"sequential\"",
-                          "How eqs. (13)–(16) go over the bodies in each outer iteration: "
-                          "sequential (body after body, each reading the fluid as the bodies "
-                          "before it left it; on several MPI ranks one sum over the ranks and one "
-                          "halo exchange per body) or simultaneous (every body from the same "
-                          "fluid, the corrections added together, as eq. (16) spreads all the "
-                          "markers at once: one sum and one halo exchange per outer iteration, "
-                          "whatever the number of bodies). Bodies whose kernel supports do not "
-                          "meet get the same answer either way; touching ones converge to the "
-                          "same λ by different paths (docs/method.md §4)."),
-                      &CaseConfig::coupling, &CouplingConfig::body_sweep));
+    s.push_back(
+        bound(key("coupling", "body_sweep", T::string, none, "\"sequential\"",
+                  "How eqs. (13)–(16) go over the bodies in each outer iteration: "
+                  "sequential (body after body, each reading the fluid as the bodies "
+                  "before it left it; on several MPI ranks one gather over the ranks and one "
+                  "halo exchange per body) or simultaneous (every body from the same "
+                  "fluid, the corrections added together, as eq. (16) spreads all the "
+                  "markers at once: one gather and one halo exchange per outer iteration, "
+                  "whatever the number of bodies). Bodies whose kernel supports do not "
+                  "meet get the same answer either way; touching ones converge to the "
+                  "same λ by different paths (docs/method.md §4)."),
+              &CaseConfig::coupling, &CouplingConfig::body_sweep));
 
     s.push_back(bound(key("contact", "model", T::string, none, "\"linear\"",
                           "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "
