@@ -190,6 +190,9 @@ TYPED_TEST(SplitGridTest, TrafficCountsEachHaloMessageAndCollective)
     EXPECT_EQ(after_sum.collectives - after_fill.collectives, comm.uses_mpi() ? 1 : 0);
     EXPECT_EQ(after_sum.collective_bytes - after_fill.collective_bytes,
               comm.uses_mpi() ? 5 * static_cast<long>(sizeof(double)) : 0);
+    // A sum is a gather of every rank's values: it brings each rank the ranks' number times them.
+    EXPECT_EQ(after_sum.collective_received_bytes - after_fill.collective_received_bytes,
+              comm.uses_mpi() ? 5 * comm.size() * static_cast<long>(sizeof(double)) : 0);
     EXPECT_DOUBLE_EQ(totals[0], world.size());
     // The time inside those calls grows with them, and a phase that encloses the sum gets it.
     EXPECT_GT(after_sum.seconds, after_fill.seconds);
@@ -242,6 +245,8 @@ TEST(SplitCommunicator, AllGatherHandsEveryRankEachRanksValuesBitForBitInRankOrd
         EXPECT_EQ(after.collectives - before.collectives, 1);
         EXPECT_EQ(after.collective_bytes - before.collective_bytes,
                   static_cast<long>(mine.size() * sizeof(double)));
+        EXPECT_EQ(after.collective_received_bytes - before.collective_received_bytes,
+                  static_cast<long>(all.size() * sizeof(double)));
     }
     // Counts that do not add up to the values are an internal error, on every rank alike.
     std::vector<double> short_all(all.size() + 1);

@@ -104,10 +104,11 @@ const double* Communicator::seconds_counter() const noexcept
     return mpi_ ? &mpi_->sent.seconds : nullptr;
 }
 
-void Communicator::count_collective(std::size_t bytes) const noexcept
+void Communicator::count_collective(std::size_t bytes, std::size_t received) const noexcept
 {
     ++mpi_->sent.collectives;
     mpi_->sent.collective_bytes += static_cast<long>(bytes);
+    mpi_->sent.collective_received_bytes += static_cast<long>(received);
 }
 
 double Communicator::max(double local) const
@@ -117,7 +118,7 @@ double Communicator::max(double local) const
     }
     // Gathered rather than MPI_MAX: a NaN must win (MPI_MAX's comparison would drop it).
     const ScopedSeconds timer(mpi_->sent.seconds);
-    count_collective(sizeof(double));
+    count_collective(sizeof(double), sizeof(double) * static_cast<std::size_t>(mpi_->size));
     std::vector<double> all(static_cast<std::size_t>(mpi_->size));
     check(MPI_Allgather(&local, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, mpi_->comm),
           "MPI_Allgather");
@@ -147,7 +148,7 @@ void Communicator::sum(std::span<double> values) const
     // each, and in each rerun (MPI_Allreduce leaves the order of additions open).
     const auto n = values.size();
     const ScopedSeconds timer(mpi_->sent.seconds);
-    count_collective(n * sizeof(double));
+    count_collective(n * sizeof(double), n * sizeof(double) * static_cast<std::size_t>(mpi_->size));
     std::vector<double> all(n * static_cast<std::size_t>(mpi_->size));
     check(MPI_Allgather(values.data(), static_cast<int>(n), MPI_DOUBLE, all.data(),
                         static_cast<int>(n), MPI_DOUBLE, mpi_->comm),
@@ -169,7 +170,8 @@ void Communicator::broadcast(std::string& bytes) const
     const ScopedSeconds timer(mpi_->sent.seconds);
     auto size = static_cast<unsigned long long>(bytes.size());
     check(MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, mpi_->comm), "MPI_Bcast");
-    count_collective(mpi_->rank == 0 ? static_cast<std::size_t>(size) : 0);
+    count_collective(mpi_->rank == 0 ? static_cast<std::size_t>(size) : 0,
+                     mpi_->rank == 0 ? 0 : static_cast<std::size_t>(size));
     bytes.resize(static_cast<std::size_t>(size));
     // In pieces below MPI's int count limit.
     constexpr std::size_t piece = std::size_t{1} << 30;
@@ -248,7 +250,8 @@ std::vector<int> Communicator::all_gather(std::span<const int> local) const
         return {local.begin(), local.end()};
     }
     const ScopedSeconds timer(mpi_->sent.seconds);
-    count_collective(local.size() * sizeof(int));
+    count_collective(local.size() * sizeof(int),
+                     local.size() * sizeof(int) * static_cast<std::size_t>(mpi_->size));
     std::vector<int> all(local.size() * static_cast<std::size_t>(mpi_->size));
     check(MPI_Allgather(local.data(), static_cast<int>(local.size()), MPI_INT, all.data(),
                         static_cast<int>(local.size()), MPI_INT, mpi_->comm),
@@ -283,7 +286,7 @@ void Communicator::all_gather(std::span<const double> local, std::span<const int
         return;
     }
     const ScopedSeconds timer(mpi_->sent.seconds);
-    count_collective(local.size() * sizeof(double));
+    count_collective(local.size() * sizeof(double), all.size() * sizeof(double));
     check(MPI_Allgatherv(local.data(), static_cast<int>(local.size()), MPI_DOUBLE, all.data(),
                          counts.data(), offsets.data(), MPI_DOUBLE, mpi_->comm),
           "MPI_Allgatherv");

@@ -36,6 +36,9 @@ struct Traffic {
     long bytes = 0;            ///< their payload [B]
     long collectives = 0;      ///< reductions, broadcasts and gathers
     long collective_bytes = 0; ///< this rank's contribution to them [B]
+    /// What they brought this rank [B]: a sum or a gather of n values from every rank brings
+    /// it n times the number of ranks, a gather of parts the parts' total.
+    long collective_received_bytes = 0;
     long all_to_alls = 0;      ///< personalised all-to-alls (all_to_all)
     long all_to_all_bytes = 0; ///< what left this rank in them [B]
     double seconds = 0.0;      ///< wall time inside all of these calls, waiting included [s]
@@ -132,8 +135,9 @@ public:
     [[nodiscard]] std::pair<int, int> cartesian_neighbours(int axis, bool axis_is_periodic) const;
 
 private:
-    /// Adds one collective of `bytes` from this rank to traffic(); needs MPI.
-    void count_collective(std::size_t bytes) const noexcept;
+    /// Adds one collective of `bytes` from this rank, bringing it `received`, to traffic();
+    /// needs MPI.
+    void count_collective(std::size_t bytes, std::size_t received) const noexcept;
 
     friend struct CommunicatorAccess; // communicator.cpp: the MPI_Comm for hypre and FFTW-MPI
 

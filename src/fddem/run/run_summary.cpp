@@ -86,6 +86,7 @@ void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
         summary.set("mpi_rank0_message_bytes", traffic.bytes);
         summary.set("mpi_rank0_collectives", traffic.collectives);
         summary.set("mpi_rank0_collective_bytes", traffic.collective_bytes);
+        summary.set("mpi_rank0_collective_received_bytes", traffic.collective_received_bytes);
         summary.set("mpi_rank0_all_to_alls", traffic.all_to_alls);
         summary.set("mpi_rank0_all_to_all_bytes", traffic.all_to_all_bytes);
         // Wall time in fddem's own halo exchanges and collectives (hypre's not seen), in all
