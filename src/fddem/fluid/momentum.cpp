@@ -377,11 +377,7 @@ void restrict_residual(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
                        const double* u, CoarseLevel<Dim>& coarse)
 {
     // The coarse rows the part meets, and the coarse columns [first, last] along x.
-    Box<Dim> coarse_rows;
-    for (std::size_t d = 0; d < coarse_rows.lo.size(); ++d) {
-        coarse_rows.lo[d] = part.offset[d] / 2;
-        coarse_rows.hi[d] = (part.offset[d] + fine.n[d] - 1) / 2 + 1;
-    }
+    Box<Dim> coarse_rows = coarse_part_box<Dim>(part, fine.n);
     const int first = coarse_rows.lo[0];
     const auto width = static_cast<std::size_t>(coarse_rows.hi[0] - first);
     coarse_rows.hi[0] = first + 1;
@@ -440,44 +436,8 @@ Box<Dim> whole_unknown_faces(const MacGrid<Dim>& grid, int axis)
     return box;
 }
 
-/// Calls f(i) for every index of `box` in a fixed order (the first axis fastest), on this
-/// thread: the order in which a rank packs and unpacks its share of a coarse level.
-template <int Dim, class F>
-void for_each_in_order(const Box<Dim>& box, F&& f)
-{
-    if (box.size() == 0) {
-        return;
-    }
-    Index<Dim> i = box.lo;
-    for (;;) {
-        f(i);
-        std::size_t d = 0;
-        for (; d < i.size(); ++d) {
-            if (++i[d] < box.hi[d]) {
-                break;
-            }
-            i[d] = box.lo[d];
-        }
-        if (d == i.size()) {
-            return;
-        }
-    }
-}
-
-/// The unknowns of the first coarse level that the members of `part` merge into: the only ones
-/// aggregate_part and restrict_residual write for it.
-template <int Dim>
-Box<Dim> coarse_part_box(const StencilView<Dim>& fine, const LevelPart<Dim>& part)
-{
-    Box<Dim> box;
-    for (std::size_t d = 0; d < box.lo.size(); ++d) {
-        box.lo[d] = part.offset[d] / 2;
-        box.hi[d] = (part.offset[d] + fine.n[d] - 1) / 2 + 1;
-    }
-    return box;
-}
-
-/// Every rank's coarse_part_box, in rank order (one gather of 2·Dim integers a rank).
+/// Every rank's coarse_part_box (linsolve/aggregation_multigrid.hpp), in rank order (one gather of
+/// 2·Dim integers a rank).
 template <int Dim>
 std::vector<Box<Dim>> gather_part_boxes(const Communicator& ranks, const Box<Dim>& mine)
 {
@@ -517,7 +477,7 @@ void sum_coarse_parts(const Communicator& ranks, std::span<const Box<Dim>> boxes
     std::vector<double> mine;
     mine.reserve(static_cast<std::size_t>(counts[me]));
     for (const std::vector<double>* values : arrays) {
-        for_each_in_order<Dim>(
+        for_each_cell_in_vtk_order<Dim>(
             boxes[me], [&](const Index<Dim>& c) { mine.push_back((*values)[layout.offset(c)]); });
     }
     std::size_t total = 0;
@@ -532,7 +492,7 @@ void sum_coarse_parts(const Communicator& ranks, std::span<const Box<Dim>> boxes
     std::size_t at = 0;
     for (const Box<Dim>& box : boxes) {
         for (std::vector<double>* values : arrays) {
-            for_each_in_order<Dim>(
+            for_each_cell_in_vtk_order<Dim>(
                 box, [&](const Index<Dim>& c) { (*values)[layout.offset(c)] += all[at++]; });
         }
     }
@@ -595,7 +555,7 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     const LevelPart<Dim> part{box.lo - whole.lo, whole.hi - whole.lo};
     const bool is_split = grid.communicator().uses_mpi();
     const std::vector<Box<Dim>> boxes =
-        is_split ? gather_part_boxes<Dim>(grid.communicator(), coarse_part_box<Dim>(fine, part))
+        is_split ? gather_part_boxes<Dim>(grid.communicator(), coarse_part_box<Dim>(part, fine.n))
                  : std::vector<Box<Dim>>();
     // Rebuilt at every solve: a hierarchy kept for the whole time step (the coefficients
     // change between outer iterations) made the eighteen-disk case blow up at a collision.

@@ -301,11 +301,7 @@ void aggregate_part(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
     reset_coarse<Dim>(part.whole_n, fine.periodic, coarse);
     // The blocks that meet the part, one coarse unknown per call: each writes only its own
     // coefficients, from the members this part holds.
-    Box<Dim> blocks;
-    for (std::size_t d = 0; d < blocks.lo.size(); ++d) {
-        blocks.lo[d] = part.offset[d] / 2;
-        blocks.hi[d] = (part.offset[d] + fine.n[d] - 1) / 2 + 1;
-    }
+    const Box<Dim> blocks = coarse_part_box<Dim>(part, fine.n);
     for_each_index(
         blocks,
         [&](const Index<Dim>& c) {

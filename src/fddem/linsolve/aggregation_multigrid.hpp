@@ -108,6 +108,21 @@ struct LevelPart {
     Index<Dim> whole_n{};
 };
 
+/// The unknowns of the first coarse level that the members of a part of `part_n` unknowns at
+/// `part` merge into: the only ones aggregate_part (and the multigrid's restriction of a part's
+/// residual) write for it.
+template <int Dim>
+[[nodiscard]] constexpr Box<Dim> coarse_part_box(const LevelPart<Dim>& part,
+                                                 const Index<Dim>& part_n) noexcept
+{
+    Box<Dim> box;
+    for (std::size_t d = 0; d < box.lo.size(); ++d) {
+        box.lo[d] = part.offset[d] / 2;
+        box.hi[d] = (part.offset[d] + part_n[d] - 1) / 2 + 1;
+    }
+    return box;
+}
+
 /// Sets `coarse` to the whole first coarse level, R A P, of the level `fine` is a part of, but
 /// holding only the terms of this part's unknowns (zero elsewhere). Summed over the processes
 /// (in any fixed order), these shares are build_coarse_levels' first level of the whole level,
