@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <span>
 #include <type_traits>
@@ -256,6 +257,9 @@ struct ScaledSystem {
     const double* source = nullptr;            ///< α (b − pressure term + relaxation) / a_P
     std::array<const double*, 2 * Dim> c_nb{}; ///< α a_nb / a_P
     std::array<std::ptrdiff_t, Dim> strides{};
+    /// Writes source and c_nb of the faces [lo, hi) of the row at `row_offset` (grid.offset of
+    /// the row's index 0) from the unscaled system.
+    std::function<void(std::ptrdiff_t row_offset, int lo, int hi)> scale_row;
 
     /// The Gauss–Seidel value at `o`: s + Σ c_nb u_nb.
     [[nodiscard]] double relaxed(const double* u, std::ptrdiff_t o) const noexcept
@@ -277,12 +281,13 @@ struct ScaledSystem {
     }
 };
 
-/// Folds the pressure gradient, the relaxation term and 1/a_P into the scaled system once:
-/// they stay fixed during the sweeps.
+/// The scaled system: folds the pressure gradient, the relaxation term and 1/a_P in once,
+/// since they stay fixed during the sweeps. Writes nothing: its scale_row fills the rows
+/// (scale_box all of them at once; the wavefront of `sweeps` row by row, just before its first
+/// sweep reads them).
 template <int Dim>
-ScaledSystem<Dim> scale_system(const MacGrid<Dim>& grid, const Box<Dim>& box, int axis,
-                               double alpha, const FluidState<Dim>& state,
-                               MomentumSystem<Dim>& system)
+ScaledSystem<Dim> scale_system(const MacGrid<Dim>& grid, int axis, double alpha,
+                               const FluidState<Dim>& state, MomentumSystem<Dim>& system)
 {
     const double relax_factor = 1.0 / alpha - 1.0;
     const double pressure_factor = grid.cell_volume() / grid.spacing(axis);
@@ -304,9 +309,8 @@ ScaledSystem<Dim> scale_system(const MacGrid<Dim>& grid, const Box<Dim>& box, in
         scaled.strides[static_cast<std::size_t>(d)] = grid.stride(d);
     }
     scaled.source = source;
-    for_each_row(box, [&](const Index<Dim>& row) {
-        const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
-        for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+    scaled.scale_row = [=](std::ptrdiff_t row_offset, int lo, int hi) {
+        for (int i = lo; i < hi; ++i) {
             const std::ptrdiff_t o = row_offset + i;
             const double scale = alpha / a_p[o];
             source[o] = scale * (b[o] - (p[o] - p[o - s_axis]) * pressure_factor +
@@ -315,8 +319,35 @@ ScaledSystem<Dim> scale_system(const MacGrid<Dim>& grid, const Box<Dim>& box, in
                 c_out[k][o] = scale * a_nb[k][o];
             }
         }
-    });
+    };
     return scaled;
+}
+
+/// The whole system scaled (ScaledSystem::scale_row over every row of `box`).
+template <int Dim>
+void scale_box(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Dim>& scaled)
+{
+    for_each_row(box, [&](const Index<Dim>& row) {
+        scaled.scale_row(grid.offset(row) - box.lo[0], box.lo[0], box.hi[0]);
+    });
+}
+
+/// Relaxes the faces of one colour (parity of the index sum) in the row of `box` that starts at
+/// `row`: u ← s + Σ c_nb u_nb, in place.
+template <int Dim>
+void relax_row(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Dim>& scaled,
+               const Index<Dim>& row, int colour, double* ua)
+{
+    int parity = 0;
+    for (const int x : row) {
+        parity += x;
+    }
+    const int first = box.lo[0] + (((parity - colour) % 2) + 2) % 2;
+    const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
+    for (int i = first; i < box.hi[0]; i += 2) {
+        const std::ptrdiff_t o = row_offset + i;
+        ua[o] = scaled.relaxed(ua, o);
+    }
 }
 
 /// One red-black Gauss–Seidel sweep of `u` over `box`. A face only reads faces of the other
@@ -327,21 +358,52 @@ template <int Dim>
 void red_black_sweep(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Dim>& scaled,
                      GridArray<Dim>& u)
 {
-    double* ua = u.data();
     for (int colour = 0; colour < 2; ++colour) {
         for_each_row(box, [&](const Index<Dim>& row) {
-            int parity = 0;
-            for (const int x : row) {
-                parity += x;
-            }
-            const int first = box.lo[0] + (((parity - colour) % 2) + 2) % 2;
-            const std::ptrdiff_t row_offset = grid.offset(row) - box.lo[0];
-            for (int i = first; i < box.hi[0]; i += 2) {
-                const std::ptrdiff_t o = row_offset + i;
-                ua[o] = scaled.relaxed(ua, o);
-            }
+            relax_row<Dim>(grid, box, scaled, row, colour, u.data());
         });
         HaloExchange<Dim>(grid).fill(u);
+    }
+}
+
+/// `count` red-black sweeps of `u` over `box`, after scaling the system's rows if `scale_first`.
+/// In 3D on a grid whose ghost refills stay within a slice across z (HaloExchange::
+/// is_plane_local: one process, z not periodic) the scaling and the colours of all the sweeps
+/// run as one wavefront over the slices (for_each_plane_wavefront), each colour refilling a
+/// slice's periodic images once it has been over it. A face reads only its own slice and the
+/// two beside it, so the values are those of the sweeps one after the other, bit for bit,
+/// while the coefficient arrays come from memory once for all the sweeps instead of once per
+/// colour. (2D keeps the sweeps one after the other: its slices are single rows, and the
+/// wavefront would run them on one thread.)
+template <int Dim>
+void sweeps(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Dim>& scaled,
+            int count, bool scale_first, GridArray<Dim>& u)
+{
+    const HaloExchange<Dim> halo(grid);
+    if (Dim == 3 && halo.is_plane_local()) {
+        const int pre = scale_first ? 1 : 0;
+        double* ua = u.data();
+        for_each_plane_wavefront(
+            box, pre + 2 * count,
+            [&](int stage, const Index<Dim>& row) {
+                if (stage < pre) {
+                    scaled.scale_row(grid.offset(row) - box.lo[0], box.lo[0], box.hi[0]);
+                } else {
+                    relax_row<Dim>(grid, box, scaled, row, (stage - pre) % 2, ua);
+                }
+            },
+            [&](int stage, int plane) {
+                if (stage >= pre) {
+                    halo.fill_plane(u, plane);
+                }
+            });
+        return;
+    }
+    if (scale_first) {
+        scale_box(grid, box, scaled);
+    }
+    for (int k = 0; k < count; ++k) {
+        red_black_sweep(grid, box, scaled, u);
     }
 }
 
@@ -540,15 +602,14 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     const Box<Dim> box = unknown_faces(grid, bc, axis);
     const double alpha = settings.relaxation;
     GridArray<Dim>& u = state.u[axis];
-    const ScaledSystem<Dim> scaled = scale_system(grid, box, axis, alpha, state, system);
+    const ScaledSystem<Dim> scaled = scale_system(grid, axis, alpha, state, system);
 
     if (settings.cycles == 0) {
-        for (int k = 0; k < settings.sweeps; ++k) {
-            red_black_sweep(grid, box, scaled, u);
-        }
+        sweeps(grid, box, scaled, settings.sweeps, true, u);
         fill_component_ghosts(grid, bc, axis, u);
         return;
     }
+    scale_box(grid, box, scaled); // the restriction reads the scaled residual everywhere
 
     const StencilView<Dim> fine = fine_level(grid, bc, box, alpha, system);
     const Box<Dim> whole = whole_unknown_faces(grid, axis);
@@ -563,9 +624,7 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     const int pre_sweeps = settings.sweeps / 2;
     const int post_sweeps = settings.sweeps - pre_sweeps;
     for (int cycle = 0; cycle < settings.cycles; ++cycle) {
-        for (int k = 0; k < pre_sweeps; ++k) {
-            red_black_sweep(grid, box, scaled, u);
-        }
+        sweeps(grid, box, scaled, pre_sweeps, false, u);
         if (!system.coarse_levels.empty()) {
             CoarseLevel<Dim>& coarse = system.coarse_levels.front();
             if (is_split) {
@@ -581,9 +640,7 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
             add_coarse_correction(box, fine, part, coarse, u.data());
             HaloExchange<Dim>(grid).fill(u);
         }
-        for (int k = 0; k < post_sweeps; ++k) {
-            red_black_sweep(grid, box, scaled, u);
-        }
+        sweeps(grid, box, scaled, post_sweeps, false, u);
     }
     fill_component_ghosts(grid, bc, axis, u);
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/grid/halo_exchange.hpp"
 
+#include "fddem/core/errors.hpp"
 #include "fddem/grid/box_values.hpp"
 #include "fddem/grid/loops.hpp"
 
@@ -163,6 +164,37 @@ void HaloExchange<Dim>::fill(GridArray<Dim>& a) const
         }
         for_each_ghost_layer(*grid_, d, [&](const Box<Dim>& layer, int owner) {
             for_each_index(layer, [&](const Index<Dim>& i) { a(i) = a(with_axis(i, d, owner)); });
+        });
+    }
+}
+
+template <int Dim>
+bool HaloExchange<Dim>::is_plane_local() const
+{
+    for (int d = 0; d < Dim; ++d) {
+        if (grid_->is_split(d)) {
+            return false;
+        }
+    }
+    return !grid_->is_periodic(Dim - 1);
+}
+
+template <int Dim>
+void HaloExchange<Dim>::fill_plane(GridArray<Dim>& a, int plane) const
+{
+    if (!is_plane_local()) {
+        throw InternalError("HaloExchange::fill_plane: the grid's ghosts reach across slices");
+    }
+    constexpr auto outer = static_cast<std::size_t>(Dim - 1);
+    for (int d = 0; d < Dim - 1; ++d) {
+        if (!grid_->is_periodic(d)) {
+            continue;
+        }
+        for_each_ghost_layer(*grid_, d, [&](Box<Dim> layer, int owner) {
+            layer.lo[outer] = plane;
+            layer.hi[outer] = plane + 1;
+            for_each_cell_in_vtk_order(
+                layer, [&](const Index<Dim>& i) { a(i) = a(with_axis(i, d, owner)); });
         });
     }
 }

@@ -48,6 +48,16 @@ public:
     void fill(GridArray<Dim>& a) const;
     void fill(FaceField<Dim>& u) const;
 
+    /// fill restricted to one slice across the outermost axis (index `plane` along Dim − 1):
+    /// the images across the periodic sides of the other axes, in the same axis order. For a
+    /// grid split along no axis and not periodic along Dim − 1 (is_plane_local()), fill is this
+    /// over every slice; a wavefront that has updated one slice refreshes its ghosts with it.
+    void fill_plane(GridArray<Dim>& a, int plane) const;
+
+    /// Whether fill touches nothing but ghosts of the owners' own slices across Dim − 1: no
+    /// axis split over ranks and Dim − 1 not periodic.
+    [[nodiscard]] bool is_plane_local() const;
+
     /// Owners += the values of their image ghosts, in a fixed order; those ghosts ← 0.
     void accumulate(GridArray<Dim>& a) const;
     void accumulate(FaceField<Dim>& u) const;

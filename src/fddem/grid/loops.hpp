@@ -60,6 +60,50 @@ void for_each_row(const Box<Dim>& box, F&& f)
     for_each_index(rows, std::forward<F>(f), static_cast<std::size_t>(box.extent(0)));
 }
 
+/// Runs `stages` passes over the rows of `box` (along axis 0) as a wavefront over its planes
+/// (the slices across the outermost axis, Dim − 1): pass q visits plane k at front t = k + q,
+/// and within a front the passes go in order. So pass q meets plane k after pass q − 1 has
+/// been over planes k and k + 1, and before pass q + 1 comes to plane k − 1. A pass whose
+/// stencil reads its own plane and the two beside it therefore reads what the passes run one
+/// after the other would give, bit for bit, while the few planes between the first pass and
+/// the last stay in cache. f(q, row_start) is called for each row of a plane, the rows of one
+/// plane in parallel (so f must not write where another row of the plane reads); then
+/// plane_done(q, plane) once, on one thread, before the next pass comes to the plane.
+template <int Dim, class F, class G>
+void for_each_plane_wavefront(const Box<Dim>& box, int stages, F&& f, G&& plane_done)
+{
+    constexpr auto outer = static_cast<std::size_t>(Dim - 1);
+    const int first = box.lo[outer];
+    const int planes = box.hi[outer] - first;
+    if (planes <= 0 || box.extent(0) <= 0 || stages <= 0) {
+        return;
+    }
+    Box<Dim> rows = box;
+    rows.hi[0] = rows.lo[0] + 1;
+    const int rows_per_plane = static_cast<int>(rows.size()) / planes;
+    [[maybe_unused]] const bool is_threaded = box.size() >= min_points_for_threads;
+#pragma omp parallel if (is_threaded)
+    for (int front = 0; front < planes + stages - 1; ++front) {
+        for (int q = 0; q < stages; ++q) {
+            const int plane = first + front - q;
+            if (plane < first || plane >= box.hi[outer]) {
+                continue;
+            }
+#pragma omp for schedule(static)
+            for (int r = 0; r < rows_per_plane; ++r) {
+                Index<Dim> row = rows.lo;
+                row[outer] = plane;
+                if constexpr (Dim == 3) {
+                    row[1] = rows.lo[1] + r;
+                }
+                f(q, row);
+            }
+#pragma omp single
+            plane_done(q, plane);
+        }
+    }
+}
+
 /// Calls f(index) for every index of `box` serially, x fastest (file output order).
 template <int Dim, class F>
 void for_each_cell_in_vtk_order(const Box<Dim>& box, F&& f)

@@ -6,6 +6,7 @@
 // every combination of periodic axes in 2D and 3D, with axes of 1, 2 and 5 cells (fewer cells
 // than ghost layers: several ghosts share one owner). Integer values make every sum exact.
 
+#include "fddem/core/errors.hpp"
 #include "fddem/grid/halo_exchange.hpp"
 #include "fddem/grid/loops.hpp"
 
@@ -157,6 +158,32 @@ TYPED_TEST(HaloExchangeTest, ZeroGhostsClearsExactlyWhatFillWrites)
             });
         }
     }
+}
+
+TYPED_TEST(HaloExchangeTest, FillPlaneOverEverySliceIsFillWhereTheGhostsStayInTheirSlice)
+{
+    constexpr int Dim = TypeParam::value;
+    std::mt19937 rng(6);
+    int n_local = 0;
+    for (const MacGrid<Dim>& grid : test_grids<Dim>()) {
+        const HaloExchange<Dim> halo(grid);
+        GridArray<Dim> a = random_integers(grid, rng);
+        EXPECT_EQ(halo.is_plane_local(), !grid.is_periodic(Dim - 1));
+        if (!halo.is_plane_local()) {
+            EXPECT_THROW(halo.fill_plane(a, 0), InternalError);
+            continue;
+        }
+        ++n_local;
+        GridArray<Dim> by_slices = a;
+        const Box<Dim> storage = grid.storage_box();
+        for (int k = storage.lo[Dim - 1]; k < storage.hi[Dim - 1]; ++k) {
+            halo.fill_plane(by_slices, k);
+        }
+        halo.fill(a);
+        for_each_cell_in_vtk_order(storage,
+                                   [&](const Index<Dim>& i) { EXPECT_EQ(by_slices(i), a(i)); });
+    }
+    EXPECT_EQ(n_local, 1 << Dim); // half of each of the two families of grids
 }
 
 } // namespace
