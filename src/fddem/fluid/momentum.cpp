@@ -383,20 +383,22 @@ void sweeps(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Di
     if (Dim == 3 && halo.is_plane_local()) {
         const int pre = scale_first ? 1 : 0;
         double* ua = u.data();
-        for_each_plane_wavefront(
-            box, pre + 2 * count,
-            [&](int stage, const Index<Dim>& row) {
-                if (stage < pre) {
-                    scaled.scale_row(grid.offset(row) - box.lo[0], box.lo[0], box.hi[0]);
-                } else {
-                    relax_row<Dim>(grid, box, scaled, row, (stage - pre) % 2, ua);
-                }
-            },
-            [&](int stage, int plane) {
-                if (stage >= pre) {
+        const auto stage = [&](int q, const Index<Dim>& row) {
+            if (q < pre) {
+                scaled.scale_row(grid.offset(row) - box.lo[0], box.lo[0], box.hi[0]);
+            } else {
+                relax_row<Dim>(grid, box, scaled, row, (q - pre) % 2, ua);
+            }
+        };
+        if (halo.has_periodic_axis()) {
+            for_each_plane_wavefront(box, pre + 2 * count, stage, [&](int q, int plane) {
+                if (q >= pre) {
                     halo.fill_plane(u, plane);
                 }
             });
+        } else {
+            for_each_plane_wavefront(box, pre + 2 * count, stage, nullptr);
+        }
         return;
     }
     if (scale_first) {

@@ -180,6 +180,17 @@ bool HaloExchange<Dim>::is_plane_local() const
 }
 
 template <int Dim>
+bool HaloExchange<Dim>::has_periodic_axis() const
+{
+    for (int d = 0; d < Dim; ++d) {
+        if (grid_->is_periodic(d)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+template <int Dim>
 void HaloExchange<Dim>::fill_plane(GridArray<Dim>& a, int plane) const
 {
     if (!is_plane_local()) {

@@ -58,6 +58,9 @@ public:
     /// axis split over ranks and Dim − 1 not periodic.
     [[nodiscard]] bool is_plane_local() const;
 
+    /// Whether fill touches anything on one process: some axis periodic.
+    [[nodiscard]] bool has_periodic_axis() const;
+
     /// Owners += the values of their image ghosts, in a fixed order; those ghosts ← 0.
     void accumulate(GridArray<Dim>& a) const;
     void accumulate(FaceField<Dim>& u) const;

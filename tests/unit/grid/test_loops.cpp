@@ -76,7 +76,9 @@ TEST(PlaneWavefront, GivesTheStagesOneAfterTheOtherBitForBit)
     std::vector<std::array<int, 2>> done;
     for_each_plane_wavefront(
         box, stages, [&](int stage, const Index<3>& row) { relax(box, stage, row, wavefront); },
-        [&](int stage, int plane) { done.push_back({stage, plane}); });
+        [&](int stage, int plane) {
+            done.push_back({stage, plane});
+        });
     ASSERT_EQ(wavefront.values.size(), one_by_one.values.size());
     for (std::size_t i = 0; i < wavefront.values.size(); ++i) {
         ASSERT_EQ(wavefront.values[i], one_by_one.values[i]) << "at entry " << i;
@@ -89,6 +91,12 @@ TEST(PlaneWavefront, GivesTheStagesOneAfterTheOtherBitForBit)
             EXPECT_FALSE(done[b][0] + 1 == done[a][0] && done[b][1] == done[a][1]);
         }
     }
+    // Without the report (nullptr), the same values.
+    Field unreported = random_field(box);
+    for_each_plane_wavefront(
+        box, stages, [&](int stage, const Index<3>& row) { relax(box, stage, row, unreported); },
+        nullptr);
+    EXPECT_EQ(unreported.values, one_by_one.values);
 }
 
 TEST(PlaneWavefront, TheCheckAboveSeesAStageRunAheadOfTheOneBefore)
