@@ -370,17 +370,19 @@ void red_black_sweep(const MacGrid<Dim>& grid, const Box<Dim>& box, const Scaled
 /// In 3D on a grid whose ghost refills stay within a slice across z (HaloExchange::
 /// is_plane_local: one process, z not periodic) the scaling and the colours of all the sweeps
 /// run as one wavefront over the slices (for_each_plane_wavefront), each colour refilling a
-/// slice's periodic images once it has been over it. A face reads only its own slice and the
-/// two beside it, so the values are those of the sweeps one after the other, bit for bit,
-/// while the coefficient arrays come from memory once for all the sweeps instead of once per
-/// colour. (2D keeps the sweeps one after the other: its slices are single rows, and the
-/// wavefront would run them on one thread.)
+/// slice's periodic images once it has been over it (the images outside `box`, in the z ghost
+/// slices and w's boundary slices, are neither changed nor read by the sweeps; the caller's full
+/// fill afterwards refreshes them). A face reads only its own slice and the two beside it, so
+/// the values are those of the sweeps one after the other, bit for bit, while the coefficient
+/// arrays come from memory once for all the `count` sweeps instead of once per colour. (2D keeps
+/// the sweeps one after the other: its slices are single rows, and the wavefront would run them on
+/// one thread.)
 template <int Dim>
 void sweeps(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Dim>& scaled,
             int count, bool scale_first, GridArray<Dim>& u)
 {
     const HaloExchange<Dim> halo(grid);
-    if (Dim == 3 && halo.is_plane_local()) {
+    if (Dim == 3 && halo.is_plane_local()) { // (not constexpr: 2D compiles it, never runs it)
         const int pre = scale_first ? 1 : 0;
         double* ua = u.data();
         const auto stage = [&](int q, const Index<Dim>& row) {

@@ -78,7 +78,7 @@ void for_each_plane_wavefront(const Box<Dim>& box, int stages, F&& f, G&& plane_
     constexpr auto outer = static_cast<std::size_t>(Dim - 1);
     const int first = box.lo[outer];
     const int planes = box.hi[outer] - first;
-    if (planes <= 0 || box.extent(0) <= 0 || stages <= 0) {
+    if (box.size() == 0 || stages <= 0) {
         return;
     }
     Box<Dim> rows = box;

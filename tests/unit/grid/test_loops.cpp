@@ -2,11 +2,19 @@
 // The plane wavefront of grid/loops.hpp: stages run as a wavefront over the slices across the
 // outermost axis give the stages one after the other, bit for bit, for a stencil that reads a
 // slice and the two beside it (here red-black Gauss–Seidel colours of a 7-point stencil with
-// irrational weights, so that any change in the order of the updates shows in the last bits).
+// irrational weights, so that any change in the order of the updates shows in the last bits),
+// on one thread and on two (ctest runs the tests with OMP_NUM_THREADS=1, so the tests set the
+// count themselves), and on a grid periodic across the slices' axes with the periodic images
+// refreshed slice by slice (HaloExchange::fill_plane), as the momentum sweeps use it.
 
+#include "fddem/grid/halo_exchange.hpp"
 #include "fddem/grid/loops.hpp"
 
 #include <gtest/gtest.h>
+
+#ifdef FDDEM_HAVE_OPENMP
+#include <omp.h>
+#endif
 
 #include <array>
 #include <cmath>
@@ -64,46 +72,134 @@ Field random_field(const Box<3>& box)
     return f;
 }
 
-TEST(PlaneWavefront, GivesTheStagesOneAfterTheOtherBitForBit)
+/// Runs `check` on one thread and on two (without OpenMP: once).
+template <class F>
+void on_one_and_two_threads(F&& check)
 {
-    const Box<3> box{{1, 2, 3}, {40, 23, 21}}; // large enough to run on threads
-    const int stages = 7;
-    Field one_by_one = random_field(box);
-    for (int stage = 0; stage < stages; ++stage) {
-        for_each_row(box, [&](const Index<3>& row) { relax(box, stage, row, one_by_one); });
+#ifdef FDDEM_HAVE_OPENMP
+    const int threads = omp_get_max_threads();
+    for (const int n : {1, 2}) {
+        omp_set_num_threads(n);
+        SCOPED_TRACE(::testing::Message() << n << " thread(s)");
+        check();
     }
-    Field wavefront = random_field(box);
-    std::vector<std::array<int, 2>> done;
-    for_each_plane_wavefront(
-        box, stages, [&](int stage, const Index<3>& row) { relax(box, stage, row, wavefront); },
-        [&](int stage, int plane) {
-            done.push_back({stage, plane});
-        });
-    ASSERT_EQ(wavefront.values.size(), one_by_one.values.size());
-    for (std::size_t i = 0; i < wavefront.values.size(); ++i) {
-        ASSERT_EQ(wavefront.values[i], one_by_one.values[i]) << "at entry " << i;
-    }
-    // Every stage visits every slice once, and reports it before the next stage reaches it.
-    ASSERT_EQ(done.size(), static_cast<std::size_t>(stages * box.extent(2)));
-    for (std::size_t a = 0; a < done.size(); ++a) {
-        for (std::size_t b = a + 1; b < done.size(); ++b) {
-            EXPECT_FALSE(done[b][0] == done[a][0] && done[b][1] == done[a][1]);
-            EXPECT_FALSE(done[b][0] + 1 == done[a][0] && done[b][1] == done[a][1]);
-        }
-    }
-    // Without the report (nullptr), the same values.
-    Field unreported = random_field(box);
-    for_each_plane_wavefront(
-        box, stages, [&](int stage, const Index<3>& row) { relax(box, stage, row, unreported); },
-        nullptr);
-    EXPECT_EQ(unreported.values, one_by_one.values);
+    omp_set_num_threads(threads);
+#else
+    check();
+#endif
 }
 
-TEST(PlaneWavefront, TheCheckAboveSeesAStageRunAheadOfTheOneBefore)
+TEST(PlaneWavefront, GivesTheStagesOneAfterTheOtherBitForBit)
+{
+    on_one_and_two_threads([] {
+        const Box<3> box{{1, 2, 3}, {40, 23, 21}}; // large enough to run on threads
+        const int stages = 7;
+        Field one_by_one = random_field(box);
+        for (int stage = 0; stage < stages; ++stage) {
+            for_each_row(box, [&](const Index<3>& row) { relax(box, stage, row, one_by_one); });
+        }
+        Field wavefront = random_field(box);
+        std::vector<std::array<int, 2>> done;
+        for_each_plane_wavefront(
+            box, stages, [&](int stage, const Index<3>& row) { relax(box, stage, row, wavefront); },
+            [&](int stage, int plane) {
+                done.push_back({stage, plane});
+            });
+        ASSERT_EQ(wavefront.values.size(), one_by_one.values.size());
+        for (std::size_t i = 0; i < wavefront.values.size(); ++i) {
+            ASSERT_EQ(wavefront.values[i], one_by_one.values[i]) << "at entry " << i;
+        }
+        // Every stage visits every slice once, and reports it before the next stage reaches it.
+        ASSERT_EQ(done.size(), static_cast<std::size_t>(stages * box.extent(2)));
+        for (std::size_t a = 0; a < done.size(); ++a) {
+            for (std::size_t b = a + 1; b < done.size(); ++b) {
+                EXPECT_FALSE(done[b][0] == done[a][0] && done[b][1] == done[a][1]);
+                EXPECT_FALSE(done[b][0] + 1 == done[a][0] && done[b][1] == done[a][1]);
+            }
+        }
+        // Without the report (nullptr), the same values.
+        Field unreported = random_field(box);
+        for_each_plane_wavefront(
+            box, stages,
+            [&](int stage, const Index<3>& row) { relax(box, stage, row, unreported); }, nullptr);
+        EXPECT_EQ(unreported.values, one_by_one.values);
+    });
+}
+
+/// One colour of a red-black sweep of a 7-point stencil on the row of `box` at `row`, in place
+/// on a grid array (its ghosts read across the periodic sides).
+void relax_grid_row(const MacGrid<3>& grid, const Box<3>& box, int colour, const Index<3>& row,
+                    GridArray<3>& u)
+{
+    double* v = u.data();
+    const std::ptrdiff_t sx = grid.stride(0);
+    const std::ptrdiff_t sy = grid.stride(1);
+    const std::ptrdiff_t sz = grid.stride(2);
+    for (int i = box.lo[0]; i < box.hi[0]; ++i) {
+        if ((i + row[1] + row[2] + colour) % 2 != 0) {
+            continue;
+        }
+        const std::ptrdiff_t o = grid.offset(Index<3>{i, row[1], row[2]});
+        v[o] = std::sqrt(2.0) / 7.0 * (v[o - sx] + v[o + sx]) +
+               std::sqrt(3.0) / 11.0 * (v[o - sy] + v[o + sy]) +
+               std::sqrt(5.0) / 13.0 * (v[o - sz] + v[o + sz]) + 0.1 * i;
+    }
+}
+
+TEST(PlaneWavefront, RefreshingPeriodicImagesSliceBySliceGivesTheSweepsOfTheWholeGrid)
+{
+    // Periodic along x and y with odd counts (the colouring is then not consistent across the
+    // seam, and a face reads its own colour's image there), walls along z.
+    const MacGrid<3> grid(Index<3>{33, 27, 12}, Vec<3>::Zero(), Vec<3>::Ones(),
+                          {true, true, false});
+    const HaloExchange<3> halo(grid);
+    ASSERT_TRUE(halo.is_plane_local());
+    const Box<3> box = grid.owned_cells();
+    const int stages = 8;
+    GridArray<3> start(grid);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> value(-1.0, 1.0);
+    for_each_cell_in_vtk_order(grid.storage_box(),
+                               [&](const Index<3>& i) { start(i) = value(rng); });
+    halo.fill(start);
+    GridArray<3> whole = start;
+    for (int stage = 0; stage < stages; ++stage) {
+        for_each_row(
+            box, [&](const Index<3>& row) { relax_grid_row(grid, box, stage % 2, row, whole); });
+        halo.fill(whole);
+    }
+    on_one_and_two_threads([&] {
+        GridArray<3> sliced = start;
+        for_each_plane_wavefront(
+            box, stages,
+            [&](int stage, const Index<3>& row) {
+                relax_grid_row(grid, box, stage % 2, row, sliced);
+            },
+            [&](int, int plane) { halo.fill_plane(sliced, plane); });
+        for_each_cell_in_vtk_order(grid.storage_box(), [&](const Index<3>& i) {
+            ASSERT_EQ(sliced(i), whole(i)) << i[0] << " " << i[1] << " " << i[2];
+        });
+        // Without the refresh the seam reads stale images: the check above can fail.
+        GridArray<3> stale = start;
+        for_each_plane_wavefront(
+            box, stages,
+            [&](int stage, const Index<3>& row) {
+                relax_grid_row(grid, box, stage % 2, row, stale);
+            },
+            nullptr);
+        halo.fill(stale);
+        std::size_t differing = 0;
+        for_each_cell_in_vtk_order(
+            box, [&](const Index<3>& i) { differing += stale(i) != whole(i) ? 1 : 0; });
+        EXPECT_GT(differing, box.size() / 10);
+    });
+}
+
+TEST(PlaneWavefront, TheTestStencilSeesAStageRunAheadOfTheOneBefore)
 {
     // All the stages over one slice before the next slice (the order a wavefront without its
     // lag would take): a stage then reads the slice above before the stage before has been
-    // there, and the values differ. So the bit-for-bit check above can fail.
+    // there, and the values differ. So this stencil tells a wrong order from the right one.
     const Box<3> box{{0, 0, 0}, {12, 9, 8}};
     const int stages = 4;
     Field one_by_one = random_field(box);
@@ -132,6 +228,7 @@ TEST(PlaneWavefront, AnEmptyBoxOrNoStageCallsNothing)
     const auto done = [&](int, int) { ++calls; };
     for_each_plane_wavefront(Box<3>{{0, 0, 0}, {4, 4, 0}}, 3, count, done);
     for_each_plane_wavefront(Box<3>{{0, 0, 0}, {0, 4, 4}}, 3, count, done);
+    for_each_plane_wavefront(Box<3>{{0, 0, 0}, {4, 0, 4}}, 3, count, done);
     for_each_plane_wavefront(Box<3>{{0, 0, 0}, {4, 4, 4}}, 0, count, done);
     EXPECT_EQ(calls, 0);
 }
