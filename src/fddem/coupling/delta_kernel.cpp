@@ -10,6 +10,8 @@ AnyKernel make_kernel(KernelKind kind)
         return RomaPeskin3Kernel{};
     case KernelKind::peskin4:
         return Peskin4Kernel{};
+    case KernelKind::roma3_smoothed:
+        return SmoothedRoma3Kernel{};
     case KernelKind::hat:
         break;
     }

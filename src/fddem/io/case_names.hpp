@@ -77,7 +77,7 @@ constexpr auto case_names(KernelKind /*tag*/)
 {
     using enum KernelKind;
     return std::to_array<EnumName<KernelKind>>(
-        {{hat, "hat"}, {roma3, "roma3"}, {peskin4, "peskin4"}});
+        {{hat, "hat"}, {roma3, "roma3"}, {peskin4, "peskin4"}, {roma3_smoothed, "roma3_smoothed"}});
 }
 constexpr auto case_names(TimeScheme /*tag*/)
 {

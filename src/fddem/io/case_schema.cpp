@@ -472,10 +472,14 @@ std::vector<KeySpec> case_schema()
                       });
     add_body_group_keys(s);
 
-    s.push_back(bound(key("coupling", "kernel", T::string, none, "\"hat\"",
-                          "Discrete delta function: hat (the paper's linear d_h), roma3 (Roma, "
-                          "Peskin & Berger 1999), peskin4 (Peskin 2002)."),
-                      &CaseConfig::coupling, &CouplingConfig::kernel));
+    s.push_back(
+        bound(key("coupling", "kernel", T::string, none, "\"hat\"",
+                  "Discrete delta function: hat (the paper's linear d_h), roma3 (Roma, "
+                  "Peskin & Berger 1999), peskin4 (Peskin 2002), roma3_smoothed (roma3 averaged "
+                  "over a cell, Yang et al. 2009: smaller force oscillations of a body "
+                  "moving across the grid, a larger effective diameter; docs/method.md §4, "
+                  "\"The spurious lateral force, isolated\")."),
+              &CaseConfig::coupling, &CouplingConfig::kernel));
     s.push_back(
         bound(ranged(key("coupling", "marker_spacing_ratio", T::real, none, "1.4",
                          "Target marker spacing h_L / h when bodies.n_rings is 0 (paper §3.1 "

@@ -26,7 +26,8 @@ std::pair<double, double> moments(double s)
 template <class T>
 class Kernels : public ::testing::Test {
 };
-using KernelTypes = ::testing::Types<HatKernel, RomaPeskin3Kernel, Peskin4Kernel>;
+using KernelTypes =
+    ::testing::Types<HatKernel, RomaPeskin3Kernel, Peskin4Kernel, SmoothedRoma3Kernel>;
 TYPED_TEST_SUITE(Kernels, KernelTypes);
 
 TYPED_TEST(Kernels, PartitionOfUnityAndZeroFirstMomentAtAnyOffset)
@@ -46,10 +47,34 @@ TYPED_TEST(Kernels, VanishesOutsideItsSupport)
     EXPECT_EQ(TypeParam::weight(-TypeParam::half_width - 0.01), 0.0);
 }
 
+TEST(Kernels, TheSmoothedKernelIsRoma3AveragedOverACell)
+{
+    // Yang et al. (2009) build φ̃(s) = ∫_{s−1/2}^{s+1/2} φ(t) dt from the three-point kernel φ;
+    // the closed form must agree with the integral (Simpson's rule on 20000 intervals).
+    for (double s = -2.2; s <= 2.2; s += 0.0371) {
+        const int n = 20000;
+        const double dt = 1.0 / n;
+        double integral = 0.0;
+        for (int i = 0; i <= n; ++i) {
+            const double t = s - 0.5 + i * dt;
+            const double w = (i == 0 || i == n) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+            integral += w * RomaPeskin3Kernel::weight(t);
+        }
+        integral *= dt / 3.0;
+        EXPECT_NEAR(SmoothedRoma3Kernel::weight(s), integral, 1e-9) << "s = " << s;
+    }
+    // Continuous where its pieces meet, and zero at the end of its support.
+    EXPECT_NEAR(SmoothedRoma3Kernel::weight(1.0 - 1e-12), SmoothedRoma3Kernel::weight(1.0 + 1e-12),
+                1e-10);
+    EXPECT_NEAR(SmoothedRoma3Kernel::weight(2.0), 0.0, 1e-14);
+}
+
 TEST(Kernels, NamesSelectKernels)
 {
     EXPECT_TRUE(std::holds_alternative<HatKernel>(make_kernel(KernelKind::hat)));
     EXPECT_TRUE(std::holds_alternative<Peskin4Kernel>(make_kernel(KernelKind::peskin4)));
+    EXPECT_TRUE(
+        std::holds_alternative<SmoothedRoma3Kernel>(make_kernel(KernelKind::roma3_smoothed)));
 }
 
 } // namespace

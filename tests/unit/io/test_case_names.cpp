@@ -42,7 +42,7 @@ TEST(CaseNames, EveryTableReadsAndWritesEachOfItsValues)
     expect_round_trip<FftPlanning>(2);
     expect_round_trip<BodyShape>(2);
     expect_round_trip<Motion>(3);
-    expect_round_trip<KernelKind>(3);
+    expect_round_trip<KernelKind>(4);
     expect_round_trip<ContactCoupling>(2);
     expect_round_trip<LubricationInContact>(2);
     expect_round_trip<TimeScheme>(2);
