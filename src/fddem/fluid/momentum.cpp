@@ -367,22 +367,28 @@ void red_black_sweep(const MacGrid<Dim>& grid, const Box<Dim>& box, const Scaled
 }
 
 /// `count` red-black sweeps of `u` over `box`, after scaling the system's rows if `scale_first`.
-/// In 3D on a grid whose ghost refills stay within a slice across z (HaloExchange::
-/// is_plane_local: one process, z not periodic) the scaling and the colours of all the sweeps
-/// run as one wavefront over the slices (for_each_plane_wavefront), each colour refilling a
-/// slice's periodic images once it has been over it (the images outside `box`, in the z ghost
-/// slices and w's boundary slices, are neither changed nor read by the sweeps; the caller's full
-/// fill afterwards refreshes them). A face reads only its own slice and the two beside it, so
-/// the values are those of the sweeps one after the other, bit for bit, while the coefficient
-/// arrays come from memory once for all the `count` sweeps instead of once per colour. (2D keeps
-/// the sweeps one after the other: its slices are single rows, and the wavefront would run them on
-/// one thread.)
+/// In 3D, on a grid not split along x or y (HaloExchange::keeps_slices_apart), the scaling and
+/// the colours of all the sweeps run as one wavefront over the z slices
+/// (for_each_plane_wavefront), each colour refreshing a slice's periodic images once it has
+/// been over it (fill_plane). A face reads only its own slice and the two beside it, so the
+/// values are those of the sweeps one after the other, bit for bit, while the coefficient
+/// arrays come from memory once for all the `count` sweeps instead of once per colour. Where
+/// the z slices go on beyond the block (z split over ranks, or periodic), the wavefront runs
+/// from the middle slice to both ends at once, and after each colour has reached the ends the
+/// end slices are exchanged along z (fill_axis) for the next colour: one message each way per
+/// colour and neighbour, as the colours one after the other have. The images the wavefront does
+/// not refresh (deeper halo layers, the z ghost slices, w's boundary slices) are not read by the
+/// sweeps; the caller's full fill afterwards refreshes them. (2D keeps the sweeps one after the
+/// other: its slices are single rows, and the wavefront would run them on one thread.)
 template <int Dim>
 void sweeps(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Dim>& scaled,
             int count, bool scale_first, GridArray<Dim>& u)
 {
     const HaloExchange<Dim> halo(grid);
-    if (Dim == 3 && halo.is_plane_local()) { // (not constexpr: 2D compiles it, never runs it)
+    // (Not constexpr: 2D compiles it, never runs it.) On a grid split along z every rank takes
+    // the wavefront, whatever its threads: the two ways exchange different halos, and all the
+    // ranks must take the same one.
+    if (Dim == 3 && halo.keeps_slices_apart() && (grid.is_split(Dim - 1) || wavefront_pays(box))) {
         const int pre = scale_first ? 1 : 0;
         double* ua = u.data();
         const auto stage = [&](int q, const Index<Dim>& row) {
@@ -392,14 +398,27 @@ void sweeps(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Di
                 relax_row<Dim>(grid, box, scaled, row, (q - pre) % 2, ua);
             }
         };
-        if (halo.has_periodic_axis()) {
-            for_each_plane_wavefront(box, pre + 2 * count, stage, [&](int q, int plane) {
-                if (q >= pre) {
-                    halo.fill_plane(u, plane);
-                }
-            });
+        const auto refresh_plane = [&](int q, int plane) {
+            if (q >= pre) {
+                halo.fill_plane(u, plane);
+            }
+        };
+        const auto exchange_ends = [&](int q) {
+            if (q >= pre) {
+                halo.fill_axis(u, Dim - 1);
+            }
+        };
+        const int stages = pre + 2 * count;
+        const bool has_images_in_planes = grid.is_periodic(0) || grid.is_periodic(1);
+        const bool has_ends = grid.is_split(Dim - 1) || grid.is_periodic(Dim - 1);
+        if (has_ends && has_images_in_planes) {
+            for_each_plane_wavefront(box, stages, true, stage, refresh_plane, exchange_ends);
+        } else if (has_ends) {
+            for_each_plane_wavefront(box, stages, true, stage, nullptr, exchange_ends);
+        } else if (has_images_in_planes) {
+            for_each_plane_wavefront(box, stages, false, stage, refresh_plane, nullptr);
         } else {
-            for_each_plane_wavefront(box, pre + 2 * count, stage, nullptr);
+            for_each_plane_wavefront(box, stages, false, stage, nullptr, nullptr);
         }
         return;
     }

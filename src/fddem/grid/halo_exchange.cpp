@@ -155,46 +155,26 @@ template <int Dim>
 void HaloExchange<Dim>::fill(GridArray<Dim>& a) const
 {
     for (int d = 0; d < Dim; ++d) {
-        if (grid_->is_split(d)) {
-            fill_split_axis(*grid_, d, a);
-            continue;
-        }
-        if (!grid_->is_periodic(d)) {
-            continue;
-        }
-        for_each_ghost_layer(*grid_, d, [&](const Box<Dim>& layer, int owner) {
-            for_each_index(layer, [&](const Index<Dim>& i) { a(i) = a(with_axis(i, d, owner)); });
-        });
+        fill_axis(a, d);
     }
 }
 
 template <int Dim>
-bool HaloExchange<Dim>::is_plane_local() const
+bool HaloExchange<Dim>::keeps_slices_apart() const
 {
-    for (int d = 0; d < Dim; ++d) {
+    for (int d = 0; d < Dim - 1; ++d) {
         if (grid_->is_split(d)) {
             return false;
         }
     }
-    return !grid_->is_periodic(Dim - 1);
-}
-
-template <int Dim>
-bool HaloExchange<Dim>::has_periodic_axis() const
-{
-    for (int d = 0; d < Dim; ++d) {
-        if (grid_->is_periodic(d)) {
-            return true;
-        }
-    }
-    return false;
+    return true;
 }
 
 template <int Dim>
 void HaloExchange<Dim>::fill_plane(GridArray<Dim>& a, int plane) const
 {
-    if (!is_plane_local()) {
-        throw InternalError("HaloExchange::fill_plane: the grid's ghosts reach across slices");
+    if (!keeps_slices_apart()) {
+        throw InternalError("HaloExchange::fill_plane: a slice's images are on other ranks");
     }
     constexpr auto outer = static_cast<std::size_t>(Dim - 1);
     for (int d = 0; d < Dim - 1; ++d) {
@@ -208,6 +188,21 @@ void HaloExchange<Dim>::fill_plane(GridArray<Dim>& a, int plane) const
                 layer, [&](const Index<Dim>& i) { a(i) = a(with_axis(i, d, owner)); });
         });
     }
+}
+
+template <int Dim>
+void HaloExchange<Dim>::fill_axis(GridArray<Dim>& a, int d) const
+{
+    if (grid_->is_split(d)) {
+        fill_split_axis(*grid_, d, a);
+        return;
+    }
+    if (!grid_->is_periodic(d)) {
+        return;
+    }
+    for_each_ghost_layer(*grid_, d, [&](const Box<Dim>& layer, int owner) {
+        for_each_index(layer, [&](const Index<Dim>& i) { a(i) = a(with_axis(i, d, owner)); });
+    });
 }
 
 template <int Dim>

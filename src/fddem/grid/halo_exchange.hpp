@@ -49,17 +49,18 @@ public:
     void fill(FaceField<Dim>& u) const;
 
     /// fill restricted to one slice across the outermost axis (index `plane` along Dim − 1):
-    /// the images across the periodic sides of the other axes, in the same axis order. For a
-    /// grid split along no axis and not periodic along Dim − 1 (is_plane_local()), fill is this
-    /// over every slice; a wavefront that has updated one slice refreshes its ghosts with it.
+    /// the images across the periodic sides of the other axes, in the same axis order. Needs
+    /// keeps_slices_apart(). With fill_axis(a, Dim − 1), it is fill over every slice; a wavefront
+    /// that has updated one slice refreshes its ghosts with it.
     void fill_plane(GridArray<Dim>& a, int plane) const;
 
-    /// Whether fill touches nothing but ghosts of the owners' own slices across Dim − 1: no
-    /// axis split over ranks and Dim − 1 not periodic.
-    [[nodiscard]] bool is_plane_local() const;
+    /// fill along one axis only (the images across its periodic sides, or the halo from the
+    /// neighbouring blocks if it is split), over the whole storage extent of the others.
+    void fill_axis(GridArray<Dim>& a, int axis) const;
 
-    /// Whether fill touches anything on one process: some axis periodic.
-    [[nodiscard]] bool has_periodic_axis() const;
+    /// Whether no axis but the outermost (Dim − 1) is split over ranks: then the images within a
+    /// slice across Dim − 1 are copies within the process (fill_plane).
+    [[nodiscard]] bool keeps_slices_apart() const;
 
     /// Owners += the values of their image ghosts, in a fixed order; those ghosts ← 0.
     void accumulate(GridArray<Dim>& a) const;

@@ -146,14 +146,17 @@ void relax_grid_row(const MacGrid<3>& grid, const Box<3>& box, int colour, const
     }
 }
 
-TEST(PlaneWavefront, RefreshingPeriodicImagesSliceBySliceGivesTheSweepsOfTheWholeGrid)
+/// Red-black colours of the 7-point stencil over a grid periodic along `periodic`, `stages`
+/// of them, (a) one after the other with a full fill after each, and (b) as the wavefront the
+/// momentum sweeps use: slices' images refreshed slice by slice, and, where z goes on beyond the
+/// ends (periodic z), from the middle with the ends exchanged along z after each colour. Both
+/// must give the same bits everywhere once the ghosts are filled; with the refresh or the
+/// exchange left out they must not.
+void check_sweeps_on(const Index<3>& cells, const std::array<bool, 3>& periodic)
 {
-    // Periodic along x and y with odd counts (the colouring is then not consistent across the
-    // seam, and a face reads its own colour's image there), walls along z.
-    const MacGrid<3> grid(Index<3>{33, 27, 12}, Vec<3>::Zero(), Vec<3>::Ones(),
-                          {true, true, false});
+    const MacGrid<3> grid(cells, Vec<3>::Zero(), Vec<3>::Ones(), periodic);
     const HaloExchange<3> halo(grid);
-    ASSERT_TRUE(halo.is_plane_local());
+    ASSERT_TRUE(halo.keeps_slices_apart());
     const Box<3> box = grid.owned_cells();
     const int stages = 8;
     GridArray<3> start(grid);
@@ -168,30 +171,95 @@ TEST(PlaneWavefront, RefreshingPeriodicImagesSliceBySliceGivesTheSweepsOfTheWhol
             box, [&](const Index<3>& row) { relax_grid_row(grid, box, stage % 2, row, whole); });
         halo.fill(whole);
     }
+    const bool has_ends = periodic[2];
+    const auto sweep = [&](GridArray<3>& a, bool refresh, bool exchange) {
+        for_each_plane_wavefront(
+            box, stages, has_ends,
+            [&](int stage, const Index<3>& row) { relax_grid_row(grid, box, stage % 2, row, a); },
+            [&](int, int plane) {
+                if (refresh) {
+                    halo.fill_plane(a, plane);
+                }
+            },
+            [&](int) {
+                if (exchange) {
+                    halo.fill_axis(a, 2);
+                }
+            });
+        halo.fill(a);
+    };
     on_one_and_two_threads([&] {
         GridArray<3> sliced = start;
-        for_each_plane_wavefront(
-            box, stages,
-            [&](int stage, const Index<3>& row) {
-                relax_grid_row(grid, box, stage % 2, row, sliced);
-            },
-            [&](int, int plane) { halo.fill_plane(sliced, plane); });
+        sweep(sliced, true, true);
         for_each_cell_in_vtk_order(grid.storage_box(), [&](const Index<3>& i) {
             ASSERT_EQ(sliced(i), whole(i)) << i[0] << " " << i[1] << " " << i[2];
         });
-        // Without the refresh the seam reads stale images: the check above can fail.
-        GridArray<3> stale = start;
+        // Without the refresh (or the exchange) the seams read stale images.
+        for (const bool refresh : {false, true}) {
+            // Without the refresh where there are images within the slices; without the exchange
+            // where z goes on beyond the ends.
+            if ((refresh && !has_ends) || (!refresh && !periodic[0] && !periodic[1])) {
+                continue;
+            }
+            GridArray<3> stale = start;
+            sweep(stale, refresh, !refresh);
+            std::size_t differing = 0;
+            for_each_cell_in_vtk_order(
+                box, [&](const Index<3>& i) { differing += stale(i) != whole(i) ? 1 : 0; });
+            EXPECT_GT(differing, box.size() / 20) << "refresh " << refresh;
+        }
+    });
+}
+
+TEST(PlaneWavefront, RefreshingPeriodicImagesSliceBySliceGivesTheSweepsOfTheWholeGrid)
+{
+    // Periodic along x and y with odd counts (the colouring is then not consistent across the
+    // seam, and a face reads its own colour's image there), walls along z.
+    check_sweeps_on(Index<3>{33, 27, 12}, {true, true, false});
+}
+
+TEST(PlaneWavefront, FromTheMiddleWithTheEndsExchangedGivesTheSweepsAcrossAPeriodicZ)
+{
+    // z periodic: the wavefront from the middle, the end slices exchanged along z after each
+    // colour (as with z split over ranks); an even and an odd number of slices (the halves then
+    // differ by one), x periodic as well in the second.
+    check_sweeps_on(Index<3>{32, 26, 14}, {false, false, true});
+    check_sweeps_on(Index<3>{31, 26, 13}, {true, false, true});
+}
+
+TEST(PlaneWavefront, FromTheMiddleEveryStageMeetsBothEndsAtOneFront)
+{
+    const Box<3> box{{0, 0, 3}, {40, 23, 16}}; // 13 slices: halves of 6 and 7
+    const int stages = 5;
+    Field one_by_one = random_field(box);
+    for (int stage = 0; stage < stages; ++stage) {
+        for_each_row(box, [&](const Index<3>& row) { relax(box, stage, row, one_by_one); });
+    }
+    on_one_and_two_threads([&] {
+        Field middle = random_field(box);
+        std::vector<std::array<int, 2>> visits; // (stage, plane) in order
+        std::vector<int> ends;
         for_each_plane_wavefront(
-            box, stages,
-            [&](int stage, const Index<3>& row) {
-                relax_grid_row(grid, box, stage % 2, row, stale);
+            box, stages, true,
+            [&](int stage, const Index<3>& row) { relax(box, stage, row, middle); },
+            [&](int stage, int plane) {
+                visits.push_back({stage, plane});
             },
-            nullptr);
-        halo.fill(stale);
-        std::size_t differing = 0;
-        for_each_cell_in_vtk_order(
-            box, [&](const Index<3>& i) { differing += stale(i) != whole(i) ? 1 : 0; });
-        EXPECT_GT(differing, box.size() / 10);
+            [&](int stage) {
+                // Both end slices have had this stage, and neither the next.
+                int at_ends = 0;
+                for (const auto& v : visits) {
+                    if (v[1] == box.lo[2] || v[1] == box.hi[2] - 1) {
+                        EXPECT_LE(v[0], stage);
+                        at_ends += v[0] == stage ? 1 : 0;
+                    }
+                }
+                EXPECT_EQ(at_ends, 2);
+                ends.push_back(stage);
+            });
+        EXPECT_EQ(middle.values, one_by_one.values);
+        EXPECT_EQ(ends, (std::vector<int>{0, 1, 2, 3, 4}));
+        EXPECT_EQ(visits.size(), static_cast<std::size_t>(stages * box.extent(2)));
     });
 }
 
