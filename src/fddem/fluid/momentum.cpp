@@ -376,10 +376,11 @@ void red_black_sweep(const MacGrid<Dim>& grid, const Box<Dim>& box, const Scaled
 /// the z slices go on beyond the block (z split over ranks, or periodic), the wavefront runs
 /// from the middle slice to both ends at once, and after each colour has reached the ends the
 /// end slices are exchanged along z (fill_axis) for the next colour: one message each way per
-/// colour and neighbour, as the colours one after the other have. The images the wavefront does
-/// not refresh (deeper halo layers, the z ghost slices, w's boundary slices) are not read by the
-/// sweeps; the caller's full fill afterwards refreshes them. (2D keeps the sweeps one after the
-/// other: its slices are single rows, and the wavefront would run them on one thread.)
+/// colour and neighbour, as the colours one after the other have. Images the sweeps do not read
+/// (deeper halo layers, which hold later colours' values meanwhile; the z ghost slices at walls;
+/// w's boundary slices) are made right by the last exchange and the caller's full fill. (2D keeps
+/// the sweeps one after the other: its slices are single rows, and the wavefront would run them on
+/// one thread.)
 template <int Dim>
 void sweeps(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Dim>& scaled,
             int count, bool scale_first, GridArray<Dim>& u)

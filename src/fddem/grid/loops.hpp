@@ -82,8 +82,8 @@ void for_each_row(const Box<Dim>& box, F&& f)
 /// With `from_the_middle`, the wavefront starts at the middle plane and runs to both ends at
 /// once (the lower half downwards, the same rule mirrored; a half with one plane more than the
 /// other starts one front earlier), so that every pass reaches the first and the last plane at
-/// the same front. Then, unless `at_the_ends` is nullptr, at_the_ends(q) runs on one thread once
-/// pass q has been over both end planes and before pass q + 1 comes to them: the place to
+/// the same front. Then, unless `at_the_ends` is nullptr, at_the_ends(q) runs on the main thread
+/// once pass q has been over both end planes and before pass q + 1 comes to them: the place to
 /// exchange the end planes with whatever lies beyond them (another rank's block, or the other
 /// end across a periodic side), which then enter the next pass as the planes beside the ends.
 template <int Dim, class F, class G, class H>
@@ -149,8 +149,11 @@ void for_each_plane_wavefront(const Box<Dim>& box, int stages, bool from_the_mid
         if constexpr (!std::is_null_pointer_v<std::remove_cvref_t<H>>) {
             const int q = front - ends_front;
             if (q >= 0 && q < stages) {
-#pragma omp single
+                // On the main thread (MPI_THREAD_FUNNELED: it may send messages), the others
+                // waiting.
+#pragma omp masked
                 at_the_ends(q);
+#pragma omp barrier
             }
         }
     }

@@ -91,8 +91,17 @@ void ensure_mpi_started()
 
 void start_mpi(int* argc, char*** argv)
 {
-    if (without_leak_checks([&] { return MPI_Init(argc, argv); }) != MPI_SUCCESS) {
-        throw InternalError("MPI_Init failed");
+    // FUNNELED: the OpenMP threads may run while the main thread calls MPI (the momentum sweeps'
+    // wavefront exchanges its end slices from the main thread inside a parallel region;
+    // grid/loops.hpp). Every MPI library provides it; what is provided is checked.
+    int provided = MPI_THREAD_SINGLE;
+    if (without_leak_checks([&] {
+            return MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+        }) != MPI_SUCCESS) {
+        throw InternalError("MPI_Init_thread failed");
+    }
+    if (provided < MPI_THREAD_FUNNELED) {
+        throw InternalError("MPI does not provide MPI_THREAD_FUNNELED");
     }
 }
 

@@ -229,38 +229,42 @@ TEST(PlaneWavefront, FromTheMiddleWithTheEndsExchangedGivesTheSweepsAcrossAPerio
 
 TEST(PlaneWavefront, FromTheMiddleEveryStageMeetsBothEndsAtOneFront)
 {
-    const Box<3> box{{0, 0, 3}, {40, 23, 16}}; // 13 slices: halves of 6 and 7
-    const int stages = 5;
-    Field one_by_one = random_field(box);
-    for (int stage = 0; stage < stages; ++stage) {
-        for_each_row(box, [&](const Index<3>& row) { relax(box, stage, row, one_by_one); });
-    }
-    on_one_and_two_threads([&] {
-        Field middle = random_field(box);
-        std::vector<std::array<int, 2>> visits; // (stage, plane) in order
-        std::vector<int> ends;
-        for_each_plane_wavefront(
-            box, stages, true,
-            [&](int stage, const Index<3>& row) { relax(box, stage, row, middle); },
-            [&](int stage, int plane) {
-                visits.push_back({stage, plane});
-            },
-            [&](int stage) {
-                // Both end slices have had this stage, and neither the next.
-                int at_ends = 0;
-                for (const auto& v : visits) {
-                    if (v[1] == box.lo[2] || v[1] == box.hi[2] - 1) {
-                        EXPECT_LE(v[0], stage);
-                        at_ends += v[0] == stage ? 1 : 0;
+    // 13 slices (halves of 6 and 7), and 1, 2 and 3 (one half empty, or of one slice each).
+    for (const int slices : {13, 1, 2, 3}) {
+        SCOPED_TRACE(::testing::Message() << slices << " slices");
+        const Box<3> box{{0, 0, 3}, {40, 23, 3 + slices}};
+        const int stages = 5;
+        Field one_by_one = random_field(box);
+        for (int stage = 0; stage < stages; ++stage) {
+            for_each_row(box, [&](const Index<3>& row) { relax(box, stage, row, one_by_one); });
+        }
+        on_one_and_two_threads([&] {
+            Field middle = random_field(box);
+            std::vector<std::array<int, 2>> visits; // (stage, plane) in order
+            std::vector<int> ends;
+            for_each_plane_wavefront(
+                box, stages, true,
+                [&](int stage, const Index<3>& row) { relax(box, stage, row, middle); },
+                [&](int stage, int plane) {
+                    visits.push_back({stage, plane});
+                },
+                [&](int stage) {
+                    // Both end slices have had this stage, and neither the next.
+                    int at_ends = 0;
+                    for (const auto& v : visits) {
+                        if (v[1] == box.lo[2] || v[1] == box.hi[2] - 1) {
+                            EXPECT_LE(v[0], stage);
+                            at_ends += v[0] == stage ? 1 : 0;
+                        }
                     }
-                }
-                EXPECT_EQ(at_ends, 2);
-                ends.push_back(stage);
-            });
-        EXPECT_EQ(middle.values, one_by_one.values);
-        EXPECT_EQ(ends, (std::vector<int>{0, 1, 2, 3, 4}));
-        EXPECT_EQ(visits.size(), static_cast<std::size_t>(stages * box.extent(2)));
-    });
+                    EXPECT_EQ(at_ends, box.extent(2) == 1 ? 1 : 2);
+                    ends.push_back(stage);
+                });
+            EXPECT_EQ(middle.values, one_by_one.values);
+            EXPECT_EQ(ends, (std::vector<int>{0, 1, 2, 3, 4}));
+            EXPECT_EQ(visits.size(), static_cast<std::size_t>(stages * box.extent(2)));
+        });
+    }
 }
 
 TEST(PlaneWavefront, TheTestStencilSeesAStageRunAheadOfTheOneBefore)
@@ -299,6 +303,13 @@ TEST(PlaneWavefront, AnEmptyBoxOrNoStageCallsNothing)
     for_each_plane_wavefront(Box<3>{{0, 0, 0}, {4, 0, 4}}, 3, count, done);
     for_each_plane_wavefront(Box<3>{{0, 0, 0}, {4, 4, 4}}, 0, count, done);
     EXPECT_EQ(calls, 0);
+    // With an exchange at the ends, an empty block still makes every stage's (its neighbours'
+    // exchanges wait for it), and nothing else.
+    std::vector<int> ends;
+    for_each_plane_wavefront(Box<3>{{0, 0, 0}, {4, 0, 4}}, 3, true, count, done,
+                             [&](int q) { ends.push_back(q); });
+    EXPECT_EQ(calls, 0);
+    EXPECT_EQ(ends, (std::vector<int>{0, 1, 2}));
 }
 
 } // namespace
