@@ -21,8 +21,9 @@ namespace fddem {
 [[nodiscard]] bool
 is_started_among_several(const std::function<const char*(const char*)>& variable);
 
-/// Starts MPI (MPI_Init with the program's arguments, which may be null). Call once, from the
-/// main thread, before any other MPI call.
+/// Starts MPI (MPI_Init_thread with the program's arguments, which may be null, asking for
+/// MPI_THREAD_FUNNELED: MPI calls from the main thread while OpenMP threads run). Call once,
+/// from the main thread, before any other MPI call.
 void start_mpi(int* argc, char*** argv);
 /// Starts MPI if it is not running and has not ended. Call from the main thread.
 void ensure_mpi_started();
