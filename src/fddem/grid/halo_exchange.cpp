@@ -5,6 +5,7 @@
 #include "fddem/grid/box_values.hpp"
 #include "fddem/grid/loops.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace fddem {
@@ -149,6 +150,26 @@ void zero_split_axis(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a)
     }
 }
 
+/// Every ghost across the periodic sides of `axis` takes its owner's value (one process along
+/// that axis). With a `plane` (an index along Dim − 1), only the ghosts of that slice, serially:
+/// a wavefront refreshes one slice on one thread while the others wait.
+template <int Dim>
+void copy_periodic_images(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a,
+                          std::optional<int> plane)
+{
+    for_each_ghost_layer(grid, axis, [&](Box<Dim> layer, int owner) {
+        const auto copy = [&](const Index<Dim>& i) { a(i) = a(with_axis(i, axis, owner)); };
+        if (!plane) {
+            for_each_index(layer, copy);
+            return;
+        }
+        constexpr auto outer = static_cast<std::size_t>(Dim - 1);
+        layer.lo[outer] = *plane;
+        layer.hi[outer] = *plane + 1;
+        for_each_cell_in_vtk_order(layer, copy);
+    });
+}
+
 } // namespace
 
 template <int Dim>
@@ -176,17 +197,10 @@ void HaloExchange<Dim>::fill_plane(GridArray<Dim>& a, int plane) const
     if (!keeps_slices_apart()) {
         throw InternalError("HaloExchange::fill_plane: a slice's images are on other ranks");
     }
-    constexpr auto outer = static_cast<std::size_t>(Dim - 1);
     for (int d = 0; d < Dim - 1; ++d) {
-        if (!grid_->is_periodic(d)) {
-            continue;
+        if (grid_->is_periodic(d)) {
+            copy_periodic_images(*grid_, d, a, plane);
         }
-        for_each_ghost_layer(*grid_, d, [&](Box<Dim> layer, int owner) {
-            layer.lo[outer] = plane;
-            layer.hi[outer] = plane + 1;
-            for_each_cell_in_vtk_order(
-                layer, [&](const Index<Dim>& i) { a(i) = a(with_axis(i, d, owner)); });
-        });
     }
 }
 
@@ -197,12 +211,9 @@ void HaloExchange<Dim>::fill_axis(GridArray<Dim>& a, int d) const
         fill_split_axis(*grid_, d, a);
         return;
     }
-    if (!grid_->is_periodic(d)) {
-        return;
+    if (grid_->is_periodic(d)) {
+        copy_periodic_images(*grid_, d, a, std::nullopt);
     }
-    for_each_ghost_layer(*grid_, d, [&](const Box<Dim>& layer, int owner) {
-        for_each_index(layer, [&](const Index<Dim>& i) { a(i) = a(with_axis(i, d, owner)); });
-    });
 }
 
 template <int Dim>
