@@ -130,12 +130,13 @@ def cube3d_table(cube_dir):
             error["icofoam"] = max_abs_difference(
                 read_icofoam_u(os.path.join(cube_dir, "icofoam_n64"), 64), reference)
             reference = read_fddem_u(os.path.join(cube_dir, "n64_ref"), 64)
-            for row in ("tol1e-4", "tol1e-5"):
+            for row in ("tol1e-4", "tol1e-5", "projection"):
                 error[row] = max_abs_difference(
                     read_fddem_u(os.path.join(cube_dir, f"n64_{row}"), 64), reference)
         for row, label in (("icofoam", "icoFoam, PISO 2 correctors"),
                            ("tol1e-4", "fddem, tolerance 1e-4"),
-                           ("tol1e-5", "fddem, tolerance 1e-5")):
+                           ("tol1e-5", "fddem, tolerance 1e-5"),
+                           ("projection", "fddem, projection step")):
             times = walls.get((n, row), {})
             if not times:
                 continue

@@ -26,6 +26,7 @@ enum class TimeScheme { euler, bdf2 };
 struct TimeLevels {
     double dt_effective;         ///< Δt_e [s]: Δt over the leading coefficient
     double history_weight = 0.0; ///< w in ũ^n = u^n + w (u^n − u^{n−1}); 0: implicit Euler
+    double step_ratio = 0.0;     ///< ω = Δt_n/Δt_{n−1}; 0 at a run's first step
 
     [[nodiscard]] bool has_history() const noexcept { return history_weight != 0.0; }
     /// ũ^n from the level-n and level-(n−1) values (numbers or small vectors).

@@ -616,6 +616,23 @@ void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
     extend_coarse_levels(levels);
 }
 
+/// max |s − u + Σ c_nb u_nb| over `box`, all ranks: the residual over a_P/α (with α = 1 the
+/// normalised residual max |r/a_P| of assemble_momentum). Reads u's ghosts.
+template <int Dim>
+double scaled_residual(const MacGrid<Dim>& grid, const Box<Dim>& box,
+                       const ScaledSystem<Dim>& scaled, const GridArray<Dim>& u)
+{
+    const double* ua = u.data();
+    return max_over_rows(grid.communicator(), box, [&](const Index<Dim>& row) {
+        const std::ptrdiff_t start = grid.offset(row);
+        double largest = 0.0;
+        for (int i = 0; i < box.hi[0] - box.lo[0]; ++i) {
+            largest = max_keeping_nan(largest, std::abs(scaled.residual(ua, start + i)));
+        }
+        return largest;
+    });
+}
+
 } // namespace
 
 template <int Dim>
@@ -623,15 +640,39 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                     const MomentumSettings& settings, MomentumSystem<Dim>& system, int axis,
                     FluidState<Dim>& state)
 {
+    (void)solve_momentum_to(grid, bc, settings, system, axis, state, MomentumStop{});
+}
+
+template <int Dim>
+MomentumSolveResult solve_momentum_to(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                                      const MomentumSettings& settings, MomentumSystem<Dim>& system,
+                                      int axis, FluidState<Dim>& state, const MomentumStop& stop)
+{
     const Box<Dim> box = unknown_faces(grid, bc, axis);
     const double alpha = settings.relaxation;
     GridArray<Dim>& u = state.u[axis];
     const ScaledSystem<Dim> scaled = scale_system(grid, axis, alpha, state, system);
+    const bool is_stopped_by_residual = stop.residual > 0.0;
+    // After each round (the sweeps, or the V-cycles, of one outer iteration), with a stop: the
+    // residual, and whether it is small enough or the rounds are spent.
+    MomentumSolveResult result;
+    const auto is_done = [&] {
+        ++result.rounds;
+        if (!is_stopped_by_residual) {
+            return true;
+        }
+        result.residual = scaled_residual(grid, box, scaled, u);
+        return result.residual <= stop.residual || result.rounds >= stop.max_rounds;
+    };
 
     if (settings.cycles == 0) {
-        sweeps(grid, box, scaled, settings.sweeps, true, u);
-        fill_component_ghosts(grid, bc, axis, u);
-        return;
+        for (bool is_first = true;; is_first = false) {
+            sweeps(grid, box, scaled, settings.sweeps, is_first, u);
+            fill_component_ghosts(grid, bc, axis, u);
+            if (is_done()) {
+                return result;
+            }
+        }
     }
     scale_box(grid, box, scaled); // the restriction reads the scaled residual everywhere
 
@@ -647,26 +688,29 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
     build_levels<Dim>(grid, fine, part, boxes, system.coarse_levels);
     const int pre_sweeps = settings.sweeps / 2;
     const int post_sweeps = settings.sweeps - pre_sweeps;
-    for (int cycle = 0; cycle < settings.cycles; ++cycle) {
-        sweeps(grid, box, scaled, pre_sweeps, false, u);
-        if (!system.coarse_levels.empty()) {
-            CoarseLevel<Dim>& coarse = system.coarse_levels.front();
-            if (is_split) {
-                std::fill(coarse.rhs.begin(), coarse.rhs.end(), 0.0);
-                std::fill(coarse.x.begin(), coarse.x.end(), 0.0);
+    do {
+        for (int cycle = 0; cycle < settings.cycles; ++cycle) {
+            sweeps(grid, box, scaled, pre_sweeps, false, u);
+            if (!system.coarse_levels.empty()) {
+                CoarseLevel<Dim>& coarse = system.coarse_levels.front();
+                if (is_split) {
+                    std::fill(coarse.rhs.begin(), coarse.rhs.end(), 0.0);
+                    std::fill(coarse.x.begin(), coarse.x.end(), 0.0);
+                }
+                restrict_residual(fine, part, scaled, system.a_p.data(), alpha, u.data(), coarse);
+                if (is_split) {
+                    std::vector<double>* const rhs[] = {&coarse.rhs};
+                    sum_coarse_parts<Dim>(grid.communicator(), boxes, coarse, rhs);
+                }
+                coarse_v_cycle(system.coarse_levels, 0, 2);
+                add_coarse_correction(box, fine, part, coarse, u.data());
+                HaloExchange<Dim>(grid).fill(u);
             }
-            restrict_residual(fine, part, scaled, system.a_p.data(), alpha, u.data(), coarse);
-            if (is_split) {
-                std::vector<double>* const rhs[] = {&coarse.rhs};
-                sum_coarse_parts<Dim>(grid.communicator(), boxes, coarse, rhs);
-            }
-            coarse_v_cycle(system.coarse_levels, 0, 2);
-            add_coarse_correction(box, fine, part, coarse, u.data());
-            HaloExchange<Dim>(grid).fill(u);
+            sweeps(grid, box, scaled, post_sweeps, false, u);
         }
-        sweeps(grid, box, scaled, post_sweeps, false, u);
-    }
-    fill_component_ghosts(grid, bc, axis, u);
+        fill_component_ghosts(grid, bc, axis, u);
+    } while (!is_done());
+    return result;
 }
 
 template <int Dim>
@@ -709,5 +753,11 @@ template void solve_momentum<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
                                 const MomentumSettings&, MomentumSystem<2>&, int, FluidState<2>&);
 template void solve_momentum<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
                                 const MomentumSettings&, MomentumSystem<3>&, int, FluidState<3>&);
+template MomentumSolveResult solve_momentum_to<2>(const MacGrid<2>&, const BoundaryConditions<2>&,
+                                                  const MomentumSettings&, MomentumSystem<2>&, int,
+                                                  FluidState<2>&, const MomentumStop&);
+template MomentumSolveResult solve_momentum_to<3>(const MacGrid<3>&, const BoundaryConditions<3>&,
+                                                  const MomentumSettings&, MomentumSystem<3>&, int,
+                                                  FluidState<3>&, const MomentumStop&);
 
 } // namespace fddem

@@ -88,4 +88,24 @@ void solve_momentum(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
                     const MomentumSettings& settings, MomentumSystem<Dim>& system, int axis,
                     FluidState<Dim>& state);
 
+/// When solve_momentum_to stops repeating its round (the settings' sweeps, or V-cycles).
+struct MomentumStop {
+    /// Stop once max |r/a_P| over the faces is at most this [m/s] (r the residual of the system
+    /// as relaxed; with α = 1 assemble_momentum's); 0: after one round, as solve_momentum.
+    double residual = 0.0;
+    int max_rounds = 1; ///< and after this many rounds in any case
+};
+struct MomentumSolveResult {
+    double residual = 0.0; ///< max |r/a_P| after the last round [m/s] (0 if not asked for)
+    int rounds = 0;        ///< rounds taken
+};
+
+/// solve_momentum, its round repeated until `stop` (simple.algorithm = "projection": the
+/// predictor of a step solved to the step's tolerance). The residual is checked after each
+/// round, one pass over the system, and its max is taken over all ranks.
+template <int Dim>
+MomentumSolveResult solve_momentum_to(const MacGrid<Dim>& grid, const BoundaryConditions<Dim>& bc,
+                                      const MomentumSettings& settings, MomentumSystem<Dim>& system,
+                                      int axis, FluidState<Dim>& state, const MomentumStop& stop);
+
 } // namespace fddem

@@ -235,10 +235,32 @@ void check_apart(const CaseDocument& doc, const std::vector<BodyConfig>& bodies,
     }
 }
 
+/// simple.algorithm = "projection": a step of the fluid alone, not relaxed.
+void check_step_algorithm(const CaseDocument& doc, const CaseConfig& c)
+{
+    if (c.simple.algorithm != StepAlgorithm::projection) {
+        return;
+    }
+    const auto fail = [&](const std::string& why) {
+        doc.fail("simple.algorithm", doc.node("simple", "algorithm"), why);
+    };
+    if (!c.bodies.empty()) {
+        fail(fmt::format("\"projection\" runs the fluid alone, and the case has {} bod{}: the "
+                         "coupling of eqs. (13)–(16) converges in the outer iterations of "
+                         "\"simple\"",
+                         c.bodies.size(), c.bodies.size() == 1 ? "y" : "ies"));
+    }
+    if (c.simple.velocity_relaxation != 1.0 || c.simple.pressure_relaxation != 1.0) {
+        fail("\"projection\" takes the whole predictor and the whole pressure correction: set "
+             "simple.velocity_relaxation and simple.pressure_relaxation to 1 (or leave them out)");
+    }
+}
+
 } // namespace
 
 void check_case(const CaseDocument& doc, const CaseConfig& c)
 {
+    check_step_algorithm(doc, c);
     check_time(doc, c);
     check_sides(doc, c);
     check_inflow_and_outflow(doc, c);

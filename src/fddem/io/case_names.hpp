@@ -90,6 +90,11 @@ constexpr auto case_names(MarkerLayout /*tag*/)
     return std::to_array<EnumName<MarkerLayout>>(
         {{paper, "paper"}, {retracted, "retracted"}, {surface, "surface"}});
 }
+constexpr auto case_names(StepAlgorithm /*tag*/)
+{
+    using enum StepAlgorithm;
+    return std::to_array<EnumName<StepAlgorithm>>({{simple, "simple"}, {projection, "projection"}});
+}
 constexpr auto case_names(BodySweep /*tag*/)
 {
     using enum BodySweep;

@@ -321,6 +321,15 @@ std::vector<KeySpec> case_schema()
                           "docs/method.md §4)."),
                       &CaseConfig::time, &TimeConfig::scheme));
 
+    s.push_back(bound(key("simple", "algorithm", T::string, none, "\"simple\"",
+                          "What a time step of the fluid is: simple (outer iterations of the "
+                          "momentum solve, the projection and, with bodies, eqs. (13)–(16), until "
+                          "the residuals are below simple.tolerance: the paper's) or projection "
+                          "(one momentum predictor, solved until its residual is below "
+                          "simple.tolerance, then one projection: the incremental "
+                          "pressure-correction scheme, as fast as a step can be; for cases "
+                          "without bodies; docs/method.md §1)."),
+                      &CaseConfig::simple, &SimpleConfig::algorithm));
     s.push_back(bound(ranged(key("simple", "tolerance", T::real, none, "1e-5",
                                  "SIMPLE convergence: normalised mass and momentum residuals below "
                                  "this end a step's outer iterations."),

@@ -175,14 +175,23 @@ void watch_step(const StepReport& report, const Clock& clock, const CaseConfig& 
     const bool is_pseudo_time = config.time.is_steady;
     if (!report.is_converged) {
         ++record.unconverged_steps;
-        if (!is_pseudo_time && record.unconverged_steps <= max_reported_unconverged) {
+        const char* const more = record.unconverged_steps == max_reported_unconverged
+                                     ? "; further ones only counted"
+                                     : "";
+        const bool is_reported =
+            !is_pseudo_time && record.unconverged_steps <= max_reported_unconverged;
+        if (is_reported && config.simple.algorithm == StepAlgorithm::projection) {
+            monitor.message(fmt::format(
+                "warning: step {} (t = {:g} s): the momentum predictor's residual {:.2e} is above "
+                "simple.tolerance {:g} after {} rounds of sweeps (simple.max_outer_iterations){}",
+                clock.step, clock.time, report.momentum_residual, config.simple.tolerance,
+                report.momentum_rounds, more));
+        } else if (is_reported) {
             monitor.message(fmt::format(
                 "warning: step {} (t = {:g} s): SIMPLE not converged in {} outer iterations "
                 "(mass residual {:.2e}, momentum residual {:.2e}, tolerance {:g}){}",
                 clock.step, clock.time, report.outer_iterations, report.mass_residual,
-                report.momentum_residual, config.simple.tolerance,
-                record.unconverged_steps == max_reported_unconverged ? "; further ones only counted"
-                                                                     : ""));
+                report.momentum_residual, config.simple.tolerance, more));
         }
     }
     if (!is_pseudo_time && report.courant > courant_warning && !record.has_warned_courant) {

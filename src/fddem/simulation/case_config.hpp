@@ -87,8 +87,15 @@ struct TimeConfig {
     TimeScheme scheme = TimeScheme::euler;     ///< the time derivative (core/time_scheme.hpp)
 };
 
+/// What a time step of the fluid is (simple.algorithm).
+enum class StepAlgorithm {
+    simple,    ///< outer iterations of eqs. (7)–(16) to simple.tolerance (the paper's)
+    projection ///< one predictor, solved to simple.tolerance, and one projection (fluid alone)
+};
+
 /// [simple]
 struct SimpleConfig {
+    StepAlgorithm algorithm = StepAlgorithm::simple;
     double tolerance = 1e-5; ///< normalised mass and momentum residuals
     /// With bodies, also require the fluid's residuals (not only the bodies' change) below
     /// `tolerance` to end a step (issue 13; docs/method.md §4)

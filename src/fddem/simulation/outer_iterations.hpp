@@ -90,6 +90,10 @@ private:
     double assemble(int k, const StepInputs<Dim>& in, const FluidState<Dim>& state);
     /// The step's convergence test, on the residuals and body change of the last iteration.
     [[nodiscard]] bool is_step_converged(bool has_bodies, const StepReport& report) const;
+    /// simple.algorithm = "projection": one predictor, its momentum systems solved until their
+    /// residual is below tolerance (at most max_outer_iterations rounds), then one projection.
+    void project(const StepInputs<Dim>& in, FluidState<Dim>& state, PhaseTimes& times,
+                 StepReport& report);
     /// Throws NumericalError if the momentum residual of outer iteration k is not finite.
     void check_finite(int k, const StepInputs<Dim>& in, const FluidState<Dim>& state,
                       const StepReport& report) const;
@@ -131,6 +135,7 @@ private:
     bool is_mass_residual_held_; ///< simple.hold_mass_residual
     bool is_forcing_before_projection_;
     int max_iterations_;
+    StepAlgorithm algorithm_; ///< simple.algorithm
     double pressure_relaxation_;
     PressureUpdate pressure_update_;
     MomentumSolver momentum_solver_; ///< simple.momentum_solver: how set_time_step picks cycles

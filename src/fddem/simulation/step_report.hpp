@@ -6,6 +6,9 @@ namespace fddem {
 
 struct StepReport {
     int outer_iterations = 0;
+    /// simple.algorithm = "projection": the rounds of sweeps (or V-cycles) its predictor took
+    /// (not in solver.csv; the warnings of an unconverged step give it)
+    int momentum_rounds = 0;
     bool is_converged = false;      ///< residuals below tolerance within the iteration limit
     double mass_residual = 0.0;     ///< max |∇·u*| h / U_ref of the last outer iteration
     double momentum_residual = 0.0; ///< max |r/a_P| / U_ref of the accepted iterate
