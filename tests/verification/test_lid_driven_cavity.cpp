@@ -67,6 +67,9 @@ std::unique_ptr<Simulation<2>> steady_cavity(StepAlgorithm algorithm)
     do {
         report = sim->advance();
         EXPECT_TRUE(report.is_converged) << "step " << sim->clock().step;
+        if (algorithm == StepAlgorithm::projection) {
+            EXPECT_EQ(report.outer_iterations, 1) << "step " << sim->clock().step;
+        }
     } while (!sim->is_finished(report));
     return sim;
 }

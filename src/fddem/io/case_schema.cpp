@@ -332,7 +332,8 @@ std::vector<KeySpec> case_schema()
                       &CaseConfig::simple, &SimpleConfig::algorithm));
     s.push_back(bound(ranged(key("simple", "tolerance", T::real, none, "1e-5",
                                  "SIMPLE convergence: normalised mass and momentum residuals below "
-                                 "this end a step's outer iterations."),
+                                 "this end a step's outer iterations (simple.algorithm = "
+                                 "\"projection\": the predictor's momentum residual)."),
                              0.0, 1.0, true, true),
                       &CaseConfig::simple, &SimpleConfig::tolerance));
     s.push_back(bound(key("simple", "converge_fluid_with_bodies", T::boolean, none, "false",
@@ -343,7 +344,8 @@ std::vector<KeySpec> case_schema()
                       &CaseConfig::simple, &SimpleConfig::is_fluid_converged_with_bodies));
     s.push_back(bound(ranged(key("simple", "max_outer_iterations", T::integer, none, "50",
                                  "Outer iterations per step at most (a step that reaches it is "
-                                 "reported as not converged)."),
+                                 "reported as not converged; simple.algorithm = \"projection\": "
+                                 "rounds of the predictor's solve at most)."),
                              1, 10000, false, false),
                       &CaseConfig::simple, &SimpleConfig::max_outer_iterations));
     s.push_back(bound(ranged(key("simple", "min_outer_iterations_dem", T::integer, none, "2",

@@ -237,10 +237,12 @@ std::string Driver<Dim>::steady_march_verdict() const
                                 "time.steady_tolerance = {:g} (raise time.end or time.max_steps)",
                                 last.rate_of_change, tolerance);
     if (!last.is_converged) {
+        const bool is_projection = config_.simple.algorithm == StepAlgorithm::projection;
         verdict +=
-            fmt::format("; warning: the last step's outer iterations did not converge "
+            fmt::format("; warning: the last step's {} did not converge "
                         "(mass residual {:.2e}, momentum residual {:.2e}, simple.tolerance "
                         "{:g}): raise simple.max_outer_iterations",
+                        is_projection ? "momentum predictor" : "outer iterations",
                         last.mass_residual, last.momentum_residual, config_.simple.tolerance);
     } else {
         verdict += fmt::format(" (last step: mass residual {:.2e}, momentum residual {:.2e})",

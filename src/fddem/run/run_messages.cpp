@@ -183,7 +183,7 @@ void watch_step(const StepReport& report, const Clock& clock, const CaseConfig& 
         if (is_reported && config.simple.algorithm == StepAlgorithm::projection) {
             monitor.message(fmt::format(
                 "warning: step {} (t = {:g} s): the momentum predictor's residual {:.2e} is above "
-                "simple.tolerance {:g} after {} round{} of sweeps, simple.max_outer_iterations: "
+                "simple.tolerance {:g} after {} round{} of its solve, simple.max_outer_iterations: "
                 "raise it{}",
                 clock.step, clock.time, report.momentum_residual, config.simple.tolerance,
                 report.momentum_rounds, report.momentum_rounds == 1 ? "" : "s", more));

@@ -167,18 +167,10 @@ void OuterIterations<Dim>::project(const StepInputs<Dim>& in, FluidState<Dim>& s
     //   than first order on the Taylor–Green vortex; about the extrapolation it is O(Δt²), BDF2
     //   second order and Euler's error below SIMPLE's there (TimeOrder.*). The first step of
     //   a run starts from u^n.
-    if (in.levels.step_ratio > 0.0) {
-        const double ratio = in.levels.step_ratio;
-        for (int a = 0; a < Dim; ++a) {
-            double* u = state.u[a].data();
-            const double* now = state.u_n[a].data();
-            const double* before = state.u_nm1[a].data();
-            for (std::size_t i = 0; i < state.u[a].size(); ++i) {
-                u[i] = now[i] + ratio * (now[i] - before[i]);
-            }
-        }
-        fill_velocity_ghosts(grid_, bc_, state.u);
-    }
+    extrapolate_start(in, state);
+    // Never the shortcut of a SIMPLE step's last assembly (a run restarted with the algorithm
+    // changed would carry it): this step's systems are about the extrapolation.
+    is_reusable_assembly_ = false;
     const double velocity_scale = reference_velocity(grid_, bc_, state.u);
     double residual = 0.0;
     {
@@ -199,6 +191,24 @@ void OuterIterations<Dim>::project(const StepInputs<Dim>& in, FluidState<Dim>& s
         correct_pressure(in.levels.dt_effective, velocity_scale, state, times); // of u*
     report.outer_iterations = 1;
     report.is_converged = report.momentum_residual <= tolerance_;
+}
+
+template <int Dim>
+void OuterIterations<Dim>::extrapolate_start(const StepInputs<Dim>& in, FluidState<Dim>& state)
+{
+    const double ratio = in.levels.step_ratio;
+    if (ratio <= 0.0) {
+        return; // a run's first step: no u^{n−1}
+    }
+    for (int a = 0; a < Dim; ++a) {
+        double* u = state.u[a].data();
+        const double* now = state.u_n[a].data();
+        const double* before = state.u_nm1[a].data();
+        for (std::size_t i = 0; i < state.u[a].size(); ++i) {
+            u[i] = now[i] + ratio * (now[i] - before[i]);
+        }
+    }
+    fill_velocity_ghosts(grid_, bc_, state.u);
 }
 
 template <int Dim>

@@ -94,6 +94,9 @@ private:
     /// residual is below tolerance (at most max_outer_iterations rounds), then one projection.
     void project(const StepInputs<Dim>& in, FluidState<Dim>& state, PhaseTimes& times,
                  StepReport& report);
+    /// state.u ← u^n + ω (u^n − u^{n−1}) (ghosts filled), ω = in.levels.step_ratio; nothing at
+    /// a run's first step.
+    void extrapolate_start(const StepInputs<Dim>& in, FluidState<Dim>& state);
     /// Throws NumericalError if the momentum residual of outer iteration k is not finite.
     void check_finite(int k, const StepInputs<Dim>& in, const FluidState<Dim>& state,
                       const StepReport& report) const;

@@ -38,6 +38,27 @@ TEST(TimeLevels, Bdf2WithoutAPreviousStepIsEuler)
     EXPECT_FALSE(levels.has_history());
 }
 
+TEST(TimeLevels, TheStepRatioIsTheNewStepOverTheLastAndZeroAtTheFirst)
+{
+    // ω = Δt_n/Δt_{n−1}: what the projection step extrapolates u^n + ω (u^n − u^{n−1}) with, for
+    // either scheme; 0 (no extrapolation) where there was no step before.
+    for (const TimeScheme scheme : {TimeScheme::euler, TimeScheme::bdf2}) {
+        EXPECT_EQ(time_levels(scheme, 0.0025, 0.005).step_ratio, 0.5);
+        EXPECT_EQ(time_levels(scheme, 0.01, 0.005).step_ratio, 2.0);
+        EXPECT_EQ(time_levels(scheme, 0.01, 0.0).step_ratio, 0.0);
+    }
+    // A parabola sampled at the two levels: the extrapolation is its tangent at t^n.
+    const double t = 1.0;
+    const double dt = 0.01;
+    const double previous = 0.005;
+    const auto u = [](double s) { return 3.0 * s * s + s; };
+    const double ratio = time_levels(TimeScheme::euler, dt, previous).step_ratio;
+    const double extrapolated = u(t) + ratio * (u(t) - u(t - previous));
+    const double tangent = u(t) + dt * (6.0 * t + 1.0);
+    // Off the tangent by −3 Δt_n Δt_{n−1}: the O(Δt²) remainder, with u'' = 6.
+    EXPECT_NEAR(extrapolated - tangent, -3.0 * dt * previous, 1e-12);
+}
+
 TEST(TimeLevels, Bdf2AtAConstantStepIsTheTextbookFormula)
 {
     // (3u^{n+1} − 4u^n + u^{n−1})/(2Δt) = (u^{n+1} − ũ^n)/(2Δt/3), ũ^n = u^n + (u^n − u^{n−1})/3.

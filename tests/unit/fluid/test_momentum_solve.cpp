@@ -157,14 +157,12 @@ TYPED_TEST(MomentumSolve, SolvedToAToleranceItsResidualIsBelowIt)
                 assemble_momentum(grid, bc, fluid, settings, TimeLevels{dt}, start, axis, system));
             const double before = residual_over_a_p(grid, bc, axis, system, start);
 
-            // No stop: one round, bit for bit solve_momentum.
+            // No stop: one round, whose residual is still far above the tolerances below.
             FluidState<Dim> once = start;
-            FluidState<Dim> plain = start;
             const MomentumSolveResult one =
                 solve_momentum_to(grid, bc, settings, system, axis, once, MomentumStop{});
-            solve_momentum(grid, bc, settings, system, axis, plain);
             EXPECT_EQ(one.rounds, 1);
-            EXPECT_EQ(max_difference(grid, bc, axis, once, plain), 0.0);
+            EXPECT_GT(residual_over_a_p(grid, bc, axis, system, once), 1e-5 * before);
 
             // A tolerance: as many rounds as it takes, and the residual it reports is the
             // system's, below the tolerance.
