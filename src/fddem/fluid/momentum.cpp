@@ -540,23 +540,32 @@ std::vector<Box<Dim>> gather_part_boxes(const Communicator& ranks, const Box<Dim
     return boxes;
 }
 
+/// The rank that solves the coarse levels of a split grid's momentum multigrid: the last, so
+/// that rank 0, which gathers the outputs, does not also gather the coarse levels.
+int coarse_root(const Communicator& ranks)
+{
+    return ranks.size() - 1;
+}
+
 /// Adds up the ranks' shares of some arrays of the first coarse level `layout` (each rank's
-/// share zero outside its box, `boxes[rank]`), in rank order, in place. Each rank gives only
-/// its box's values, and one gather (Communicator::all_gather) brings every rank each box once:
-/// about the whole level per rank. A sum of the whole arrays (Communicator::sum, before the
-/// twenty-fifth session) brought the whole level from every rank, the ranks' number times it,
-/// at every V-cycle. The totals are that sum's bit for bit (the zeros it added change nothing,
-/// up to the sign of a zero).
+/// share zero outside its box, `boxes[rank]`) on coarse_root alone, in rank order, in place
+/// (the other ranks' arrays keep their own share). Each rank sends its box's values to the root
+/// in one personalised all-to-all (Communicator::all_to_all) in which the others receive
+/// nothing. Until the twenty-seventh session every rank received every box (an all-gather) and
+/// summed and solved the whole level itself: each rank received about the whole level, a
+/// traffic that grows with the number of ranks. The root's totals are that sum's bit for bit.
 template <int Dim>
-void sum_coarse_parts(const Communicator& ranks, std::span<const Box<Dim>> boxes,
-                      const CoarseLevel<Dim>& layout, std::span<std::vector<double>* const> arrays)
+void sum_coarse_parts_on_root(const Communicator& ranks, std::span<const Box<Dim>> boxes,
+                              const CoarseLevel<Dim>& layout,
+                              std::span<std::vector<double>* const> arrays)
 {
     const auto me = static_cast<std::size_t>(ranks.rank());
+    const bool is_root = ranks.rank() == coarse_root(ranks);
     std::vector<int> counts;
     for (const Box<Dim>& box : boxes) {
         const std::size_t count = box.size() * arrays.size();
         if (count > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-            throw InternalError("sum_coarse_parts: a part of more than 2^31 values");
+            throw InternalError("sum_coarse_parts_on_root: a part of more than 2^31 values");
         }
         counts.push_back(static_cast<int>(count));
     }
@@ -566,12 +575,18 @@ void sum_coarse_parts(const Communicator& ranks, std::span<const Box<Dim>> boxes
         for_each_cell_in_vtk_order<Dim>(
             boxes[me], [&](const Index<Dim>& c) { mine.push_back((*values)[layout.offset(c)]); });
     }
+    std::vector<int> send_counts(boxes.size(), 0);
+    send_counts[static_cast<std::size_t>(coarse_root(ranks))] = counts[me];
+    const std::vector<int> receive_counts = is_root ? counts : std::vector<int>(boxes.size(), 0);
     std::size_t total = 0;
-    for (const int c : counts) {
+    for (const int c : receive_counts) {
         total += static_cast<std::size_t>(c);
     }
     std::vector<double> all(total);
-    ranks.all_gather(mine, counts, all);
+    ranks.all_to_all(mine, send_counts, all, receive_counts);
+    if (!is_root) {
+        return;
+    }
     for (std::vector<double>* values : arrays) {
         std::fill(values->begin(), values->end(), 0.0);
     }
@@ -584,12 +599,41 @@ void sum_coarse_parts(const Communicator& ranks, std::span<const Box<Dim>> boxes
     }
 }
 
+/// coarse_root's values of `x` over each rank's box, `boxes[rank]`, sent to that rank into its
+/// `x` (one personalised all-to-all in which the root alone sends): what the rank's faces read
+/// of the coarse correction (add_coarse_correction).
+template <int Dim>
+void scatter_coarse_parts_from_root(const Communicator& ranks, std::span<const Box<Dim>> boxes,
+                                    const CoarseLevel<Dim>& layout, std::vector<double>& x)
+{
+    const auto me = static_cast<std::size_t>(ranks.rank());
+    const bool is_root = ranks.rank() == coarse_root(ranks);
+    std::vector<int> send_counts(boxes.size(), 0);
+    std::vector<double> parts;
+    if (is_root) {
+        for (std::size_t r = 0; r < boxes.size(); ++r) {
+            send_counts[r] = static_cast<int>(boxes[r].size());
+            for_each_cell_in_vtk_order<Dim>(
+                boxes[r], [&](const Index<Dim>& c) { parts.push_back(x[layout.offset(c)]); });
+        }
+    }
+    std::vector<int> receive_counts(boxes.size(), 0);
+    receive_counts[static_cast<std::size_t>(coarse_root(ranks))] =
+        static_cast<int>(boxes[me].size());
+    std::vector<double> part(boxes[me].size());
+    ranks.all_to_all(parts, send_counts, part, receive_counts);
+    std::size_t at = 0;
+    for_each_cell_in_vtk_order<Dim>(boxes[me],
+                                    [&](const Index<Dim>& c) { x[layout.offset(c)] = part[at++]; });
+}
+
 /// The multigrid's levels below `fine`. On a split grid (`part` a part of the whole level)
-/// every rank builds its share of the whole first coarse level, the shares are summed over the
-/// ranks (sum_coarse_parts, `boxes` every rank's share), and every rank then holds the same
-/// whole hierarchy below it (a redundant coarse solve: the levels are 2^Dim and more times
+/// every rank builds its share of the whole first coarse level, the shares are summed on
+/// coarse_root (sum_coarse_parts_on_root, `boxes` every rank's share), and the root alone
+/// holds the whole hierarchy below it and solves it (the levels are 2^Dim and more times
 /// smaller than the fine grid, and the result is the one-process hierarchy, up to the order of
-/// additions, whatever the layout).
+/// additions, whatever the layout). The other ranks keep the first level for their share of the
+/// restriction and the correction.
 template <int Dim>
 void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
                   const LevelPart<Dim>& part, std::span<const Box<Dim>> boxes,
@@ -612,8 +656,12 @@ void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
     for (auto& a : first.a_nb) {
         arrays.push_back(&a);
     }
-    sum_coarse_parts<Dim>(grid.communicator(), boxes, first, arrays);
-    extend_coarse_levels(levels);
+    sum_coarse_parts_on_root<Dim>(grid.communicator(), boxes, first, arrays);
+    if (grid.communicator().rank() == coarse_root(grid.communicator())) {
+        extend_coarse_levels(levels);
+    } else {
+        levels.resize(1);
+    }
 }
 
 /// max |s − u + Σ c_nb u_nb| over `box`, all ranks: the residual over a_P/α (with α = 1 the
@@ -700,9 +748,15 @@ MomentumSolveResult solve_momentum_to(const MacGrid<Dim>& grid, const BoundaryCo
                 restrict_residual(fine, part, scaled, system.a_p.data(), alpha, u.data(), coarse);
                 if (is_split) {
                     std::vector<double>* const rhs[] = {&coarse.rhs};
-                    sum_coarse_parts<Dim>(grid.communicator(), boxes, coarse, rhs);
+                    sum_coarse_parts_on_root<Dim>(grid.communicator(), boxes, coarse, rhs);
+                    if (grid.communicator().rank() == coarse_root(grid.communicator())) {
+                        coarse_v_cycle(system.coarse_levels, 0, 2);
+                    }
+                    scatter_coarse_parts_from_root<Dim>(grid.communicator(), boxes, coarse,
+                                                        coarse.x);
+                } else {
+                    coarse_v_cycle(system.coarse_levels, 0, 2);
                 }
-                coarse_v_cycle(system.coarse_levels, 0, 2);
                 add_coarse_correction(box, fine, part, coarse, u.data());
                 HaloExchange<Dim>(grid).fill(u);
             }
