@@ -237,7 +237,7 @@ std::string Driver<Dim>::steady_march_verdict() const
                                 "time.steady_tolerance = {:g} (raise time.end or time.max_steps)",
                                 last.rate_of_change, tolerance);
     if (!last.is_converged) {
-        const bool is_projection = config_.simple.algorithm == StepAlgorithm::projection;
+        const bool is_projection = last.momentum_rounds > 0; // not a step near a contact
         verdict +=
             fmt::format("; warning: the last step's {} did not converge "
                         "(mass residual {:.2e}, momentum residual {:.2e}, simple.tolerance "

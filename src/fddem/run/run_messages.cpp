@@ -180,7 +180,8 @@ void watch_step(const StepReport& report, const Clock& clock, const CaseConfig& 
                                      : "";
         const bool is_reported =
             !is_pseudo_time && record.unconverged_steps <= max_reported_unconverged;
-        if (is_reported && config.simple.algorithm == StepAlgorithm::projection) {
+        // A projection step (simple.algorithm; not one near a contact, which iterates).
+        if (is_reported && report.momentum_rounds > 0) {
             monitor.message(fmt::format(
                 "warning: step {} (t = {:g} s): the momentum predictor's residual {:.2e} is above "
                 "simple.tolerance {:g} after {} round{} of its solve, simple.max_outer_iterations: "

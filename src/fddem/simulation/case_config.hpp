@@ -89,8 +89,10 @@ struct TimeConfig {
 
 /// What a time step of the fluid is (simple.algorithm).
 enum class StepAlgorithm {
-    simple,    ///< outer iterations of eqs. (7)–(16) to simple.tolerance (the paper's)
-    projection ///< one predictor, solved to simple.tolerance, and one projection (fluid alone)
+    simple, ///< outer iterations of eqs. (7)–(16) to simple.tolerance (the paper's)
+    /// one predictor, solved to simple.tolerance, one projection and one pass of eqs. (13)–(16)
+    /// (a step with a body near contact takes simple's iterations)
+    projection
 };
 
 /// [simple]

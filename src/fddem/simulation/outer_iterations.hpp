@@ -92,8 +92,12 @@ private:
     [[nodiscard]] bool is_step_converged(bool has_bodies, const StepReport& report) const;
     /// simple.algorithm = "projection": one predictor, its momentum systems solved until their
     /// residual is below tolerance (at most max_outer_iterations rounds), then one projection.
-    void project(const StepInputs<Dim>& in, FluidState<Dim>& state, PhaseTimes& times,
-                 StepReport& report);
+    void project(const StepInputs<Dim>& in, FluidState<Dim>& state, Particles<Dim>& bodies,
+                 PhaseTimes& times, StepReport& report);
+    /// simple.algorithm = "projection": a free body is in contact, linked by a film, or within
+    /// two kernel widths of a wall or another body in this step (which then takes SIMPLE's
+    /// iterations).
+    [[nodiscard]] bool is_any_body_near_contact(const Particles<Dim>& bodies) const;
     /// state.u ← u^n + ω (u^n − u^{n−1}) (ghosts filled), ω = in.levels.step_ratio; nothing at
     /// a run's first step.
     void extrapolate_start(const StepInputs<Dim>& in, FluidState<Dim>& state);
