@@ -257,6 +257,13 @@ void check_step_algorithm(const CaseDocument& doc, const CaseConfig& c)
                              body_name(doc, b), b.density / c.fluid.density));
         }
     }
+    if (!c.bodies.empty() && c.time.scheme == TimeScheme::bdf2) {
+        // Measured: Schäfer & Turek 2D-2 (a fixed cylinder, D/20, Δt 0.0025) blew up at t = 2.5–2.6
+        // with BDF2 and either marker layout, and ran with Euler (docs/method.md §1).
+        fail("with bodies, \"projection\" blew up under time.scheme = \"bdf2\" (the shedding "
+             "cylinder of Schäfer & Turek at t = 2.6): use time.scheme = \"euler\", or "
+             "\"simple\"");
+    }
     if (c.simple.velocity_relaxation != 1.0 || c.simple.pressure_relaxation != 1.0) {
         fail("\"projection\" takes the whole predictor and the whole pressure correction: set "
              "simple.velocity_relaxation and simple.pressure_relaxation to 1 (or leave them out)");

@@ -328,10 +328,10 @@ std::vector<KeySpec> case_schema()
                           "(one momentum predictor, solved until its residual is below "
                           "simple.tolerance, one projection and, with bodies, one pass of eqs. "
                           "(13)–(16): the incremental pressure-correction scheme, 1.7–4.4 "
-                          "times faster in the cases measured; free bodies must be no lighter than "
-                          "the fluid, and a step with "
-                          "a body in contact or within two cells of a wall or another body takes "
-                          "simple's iterations; docs/method.md §1)."),
+                          "times faster in the cases measured; with bodies: time.scheme "
+                          "\"euler\" only, no free body lighter than the fluid, and a step with "
+                          "a body in contact or within two kernel widths of a wall or another "
+                          "body takes simple's iterations; docs/method.md §1)."),
                       &CaseConfig::simple, &SimpleConfig::algorithm));
     s.push_back(bound(ranged(key("simple", "tolerance", T::real, none, "1e-5",
                                  "SIMPLE convergence: normalised mass and momentum residuals below "
