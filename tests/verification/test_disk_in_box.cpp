@@ -105,6 +105,45 @@ TEST(DiskInBox, TheProjectionStepFallsAndLandsAsSimpleDoes)
     EXPECT_GT(projection.iterated_steps, 10);
 }
 
+TEST(DiskInBox, AProjectionStepNearAnotherBodyOrAWallIteratesInstead)
+{
+    // is_any_body_near_contact: a free disk within two cells (the hat kernel's two widths) of a
+    // fixed disk listed before it, or of a wall, takes SIMPLE's iterations (no predictor
+    // rounds); one far from both takes the projection step.
+    const auto first_step = [](double free_x, double free_y) {
+        const std::string text = R"([domain]
+size = [2.0, 2.0]
+cells = [32, 32]
+[fluid]
+density = 1.0
+viscosity = 0.01
+gravity = [0.0, -980.0]
+[time]
+dt = 0.001
+end = 0.001
+[simple]
+algorithm = "projection"
+[[bodies]]
+diameter = 0.5
+density = 2.0
+position = [0.5, 1.0]
+motion = "fixed"
+[[bodies]]
+diameter = 0.5
+density = 2.0
+)";
+        const CaseConfig config = read_case_string(
+            text, "near.toml",
+            {"bodies.2.position=[" + std::to_string(free_x) + "," + std::to_string(free_y) + "]"});
+        Simulation<2> sim(config);
+        return sim.advance().momentum_rounds;
+    };
+    const double h = 2.0 / 32;
+    EXPECT_GT(first_step(1.5, 1.0), 0);            // far from the fixed disk and the walls
+    EXPECT_EQ(first_step(1.0 + 1.5 * h, 1.0), 0);  // 1.5 h from the fixed disk
+    EXPECT_EQ(first_step(1.5, 0.25 + 1.5 * h), 0); // 1.5 h above the floor
+}
+
 TEST(DiskInBox, RunStopsOnceTheDiskHasSettled)
 {
     // time.rest_speed: the run ends rest_duration after every free body became slower than

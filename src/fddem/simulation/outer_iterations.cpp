@@ -239,8 +239,12 @@ bool OuterIterations<Dim>::is_any_body_near_contact(const Particles<Dim>& bodies
                 return true;
             }
         }
-        // Every pair once (a cell list would be needed for tens of thousands of bodies).
-        for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+        // Every pair with a free body once: a pair of free bodies from its first (a cell list
+        // would be needed for tens of thousands of bodies).
+        for (std::size_t j = 0; j < bodies.size(); ++j) {
+            if (j == i || (j < i && bodies[j].is_free())) {
+                continue;
+            }
             if (domain.minimum_image(bodies[j].centre - body.centre).norm() - body.radius() -
                     bodies[j].radius() <
                 near) {
