@@ -248,7 +248,7 @@ void check_step_algorithm(const CaseDocument& doc, const CaseConfig& c)
         // One pass of eqs. (13)–(16) a step: the fluid inside a body comes from the pass before,
         // so a light body's added mass feeds back explicitly. Measured (a disk rising in a
         // 2 × 4 box, D/8, Δt 0.001, to t = 0.1): ρs/ρf 0.7 and 0.9 follow SIMPLE within 1.5 %,
-        // 0.5, 0.3 and 0.1 blow up within 10 steps (docs/method.md §1).
+        // 0.5 blows up at step 59, 0.3 and 0.1 within 10 steps (docs/method.md §1).
         if (moves_freely(b) && b.density < c.fluid.density) {
             fail(fmt::format("\"projection\" makes one pass of eqs. (13)–(16) a step, which "
                              "blew up for bodies at half the fluid's density and below, so it "
