@@ -63,6 +63,7 @@ FallAndLanding fall_and_land(StepAlgorithm algorithm)
     CaseConfig config = read_case(fig05, {"domain.cells=[64,192]", "time.end=1.2"});
     config.bodies.front().n_rings = 3;
     config.simple.algorithm = algorithm;
+    config.coupling.is_forcing_normalised = true; // what the projection step needs with bodies
     Simulation<2> sim(config);
     FallAndLanding run;
     StepReport report;
@@ -123,6 +124,8 @@ dt = 0.001
 end = 0.001
 [simple]
 algorithm = "projection"
+[coupling]
+normalised_forcing = true
 [[bodies]]
 diameter = 0.5
 density = 2.0

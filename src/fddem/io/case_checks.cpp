@@ -257,6 +257,14 @@ void check_step_algorithm(const CaseDocument& doc, const CaseConfig& c)
                              body_name(doc, b), b.density / c.fluid.density));
         }
     }
+    if (!c.bodies.empty() && !c.coupling.is_forcing_normalised) {
+        // One forcing pass a step is a Richardson step of eq. (15) that no outer iteration damps:
+        // modes of I·D above 2 grow from step to step. Measured: the impulsive cylinder at D/40
+        // (retracted markers) blew up at t = 1.48 without the normalised correction and ran
+        // with it (docs/method.md §1).
+        fail("with bodies, \"projection\" needs coupling.normalised_forcing = true: its single "
+             "forcing pass a step otherwise blew up (the impulsive cylinder at D/40, t = 1.48)");
+    }
     if (!c.bodies.empty() && c.time.scheme == TimeScheme::bdf2) {
         // Measured: Schäfer & Turek 2D-2 (a fixed cylinder, D/20, Δt 0.0025) blew up at t = 2.5–2.6
         // with BDF2 and either marker layout, and ran with Euler (docs/method.md §1).

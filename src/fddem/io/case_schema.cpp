@@ -329,7 +329,8 @@ std::vector<KeySpec> case_schema()
                           "simple.tolerance, one projection and, with bodies, one pass of eqs. "
                           "(13)–(16): the incremental pressure-correction scheme, 1.7–4.4 "
                           "times faster in the cases measured; with bodies: time.scheme "
-                          "\"euler\" only, no free body lighter than the fluid, and a step with "
+                          "\"euler\" and coupling.normalised_forcing only, no free body lighter "
+                          "than the fluid, and a step with "
                           "a body in contact or within two kernel widths of a wall or another "
                           "body takes simple's iterations; docs/method.md §1)."),
                       &CaseConfig::simple, &SimpleConfig::algorithm));
