@@ -13,6 +13,14 @@
 ///                    Anderson mixing of the iterate (docs/method.md §4), from k = 3
 ///                    the body force ρf D(λ*) for the next iteration
 ///
+/// With simple.algorithm = "projection" (fddem's, not the paper's; docs/method.md §1) a step
+/// whose bodies are all clear of contact is instead, once (project):
+///
+///     u ← u^n + ω (u^n − u^{n−1})   the iterate the predictor is linearised about
+///     eqs. (7)–(8)   momentum solved until its residual is below simple.tolerance → u*
+///     eqs. (9)–(12)  pressure correction
+///     eqs. (13)–(16) with bodies, one pass (before (9)–(12) with force_before_projection)
+///
 /// It owns what only the iterations use (the momentum systems, the pressure solver, the
 /// mixing's history and per-step scratch, allocated once), so that no allocation happens inside
 /// the loop.
@@ -91,7 +99,8 @@ private:
     /// The step's convergence test, on the residuals and body change of the last iteration.
     [[nodiscard]] bool is_step_converged(bool has_bodies, const StepReport& report) const;
     /// simple.algorithm = "projection": one predictor, its momentum systems solved until their
-    /// residual is below tolerance (at most max_outer_iterations rounds), then one projection.
+    /// residual is below tolerance (at most max_outer_iterations rounds), one projection and,
+    /// with bodies, one pass of eqs. (13)–(16).
     void project(const StepInputs<Dim>& in, FluidState<Dim>& state, Particles<Dim>& bodies,
                  PhaseTimes& times, StepReport& report);
     /// simple.algorithm = "projection": a free body is in contact, linked by a film, or within

@@ -6,8 +6,9 @@ namespace fddem {
 
 struct StepReport {
     int outer_iterations = 0;
-    /// simple.algorithm = "projection": the rounds of sweeps (or V-cycles) its predictor took
-    /// (not in solver.csv; the warnings of an unconverged step give it)
+    /// A projection step (simple.algorithm): the rounds of sweeps (or V-cycles) its predictor
+    /// took; 0 for a step of SIMPLE's outer iterations, which is how the messages tell the two
+    /// apart (not in solver.csv)
     int momentum_rounds = 0;
     bool is_converged = false;      ///< residuals below tolerance within the iteration limit
     double mass_residual = 0.0;     ///< max |∇·u*| h / U_ref of the last outer iteration

@@ -348,6 +348,13 @@ std::vector<BadCase> bad_cases()
          19,
          "simple.momentum_cycles",
          "out of range"},
+        {"misspelt_algorithm",
+         v + "[simple]\nalgorithm = \"projektion\"\n",
+         {},
+         f,
+         19,
+         "simple.algorithm",
+         "did you mean 'projection'"},
         {"projection_with_a_light_body",
          v + replace(body, "density = 2.0", "density = 0.5") +
              "[simple]\nalgorithm = \"projection\"\n",
