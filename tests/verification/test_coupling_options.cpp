@@ -91,18 +91,22 @@ TEST(CouplingOptions, ARetractionThatLeavesNoRoomForTheRingsIsBadInput)
     }
 }
 
-TEST(CouplingOptions, SurfaceMarkersHoldAFixedBodyAndRefuseAFreeOne)
+TEST(CouplingOptions, SurfaceMarkersHoldAFixedBodyAndRefuseAFreeOneWithoutTheCellsInnerFluid)
 {
-    // The surface layout (one ring, no markers inside) leaves eqs. (13)–(14) of a free body
-    // without the fluid momentum inside it: bad input, naming coupling.markers.
+    // The surface layout (one ring, no markers inside) leaves the paper's eqs. (13)–(14) of a
+    // free body without the fluid momentum inside it: bad input, naming coupling.markers and
+    // the option that takes that momentum from the cells instead (coupling.inner_fluid).
     try {
         (void)small_cylinder({"coupling.markers=surface", "bodies.motion=free"});
         FAIL() << "accepted";
     } catch (const InputError& e) {
         EXPECT_EQ(e.key(), "coupling.markers");
-        EXPECT_NE(std::string(e.what()).find("fixed and prescribed"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("coupling.inner_fluid = \"volume\""),
+                  std::string::npos)
             << e.what();
     }
+    EXPECT_NO_THROW((void)small_cylinder(
+        {"coupling.markers=surface", "bodies.motion=free", "coupling.inner_fluid=volume"}));
     // The fixed cylinder of 2D-1 with it: every step converges, its ring is held at rest as
     // closely as the retracted layout holds its own (the marker defect of the last outer
     // iteration, a slip velocity relative to U_ref, within a factor of 2 of it), and the drag

@@ -23,6 +23,15 @@ namespace fddem {
 /// towed disk), or not at all (fixed).
 enum class Motion { free, prescribed, fixed };
 
+/// The fluid's momentum and angular momentum (about the centre) inside a body, divided by ρf:
+/// ∫_P u dx [m⁴/s] and ∫_P r × u dx [m⁵/s] (2D: per unit depth), from the cells' volume
+/// fractions (coupling.inner_fluid = "volume", coupling/inner_fluid.hpp).
+template <int Dim>
+struct InnerFluid {
+    Vec<Dim> momentum = Vec<Dim>::Zero();
+    AngularVec<Dim> moment = zero_angular<Dim>();
+};
+
 /// The fictitious-domain coupling of one body (paper §2.2–2.3): its markers and λ.
 template <int Dim>
 struct MarkerCoupling {
@@ -45,6 +54,10 @@ struct MarkerCoupling {
     /// The outermost marker's distance from the centre, max |r_l| [m]: every marker lies within
     /// it (which ranks hold some of the markers: coupling/marker_routes.hpp).
     double reach = 0.0;
+    /// With coupling.inner_fluid = "volume" (else unused): the fluid inside the body at the
+    /// step's start (u^n over the body at X^n) and at the latest u of the step (eqs. (13)–(14)).
+    InnerFluid<Dim> inner_fluid_n;
+    InnerFluid<Dim> inner_fluid;
 
     /// Whether the per-marker arrays (offsets … lambda_star) are held: always, except on a rank
     /// of a split grid that neither owns the body nor holds any of its markers (release_arrays;

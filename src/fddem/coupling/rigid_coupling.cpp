@@ -12,6 +12,29 @@ RigidBalance<Dim> rigid_balance(const RigidUpdateInput<Dim>& in, std::span<const
                                 std::span<const Vec<Dim>> fluid_at_markers,
                                 std::span<const Vec<Dim>> lambda_star)
 {
+    const double dt = in.dt;
+    if (in.inner_fluid != nullptr) {
+        // eqs. (13')–(14') of coupling/inner_fluid.hpp: the inner fluid's change over the
+        // cells, the markers' λ* alone
+        Vec<Dim> force = Vec<Dim>::Zero();
+        AngularVec<Dim> moment = zero_angular<Dim>();
+        for (std::size_t l = 0; l < offsets.size(); ++l) {
+            force += volumes[l] * lambda_star[l];
+            moment += volumes[l] * cross(offsets[l], lambda_star[l]);
+        }
+        const InnerFluid<Dim>& now = *in.inner_fluid;
+        const InnerFluid<Dim>& before = *in.inner_fluid_n;
+        return {in.body_density * in.volume * in.velocity_n / dt +
+                    (in.body_density - in.fluid_density) * in.volume * in.gravity +
+                    in.fluid_density * (Vec<Dim>(now.momentum - before.momentum) / dt - force) +
+                    in.external_force,
+                in.body_density * in.volume / dt,
+                apply<Dim>(in.body_inertia, in.omega_n) / dt -
+                    gyroscopic<Dim>(in.body_inertia, in.omega_n) +
+                    in.fluid_density * (AngularVec<Dim>(now.moment - before.moment) / dt - moment) +
+                    in.external_torque,
+                in.body_inertia / dt};
+    }
     Vec<Dim> momentum = Vec<Dim>::Zero();
     AngularVec<Dim> angular{};
     if constexpr (Dim == 3) {
@@ -22,7 +45,6 @@ RigidBalance<Dim> rigid_balance(const RigidUpdateInput<Dim>& in, std::span<const
         momentum += volumes[l] * source;
         angular += volumes[l] * cross(offsets[l], source);
     }
-    const double dt = in.dt;
     const double buoyant_mass = (in.body_density - in.fluid_density) * in.volume;
     const Inertia<Dim> excess = in.body_inertia - in.fluid_density * in.fluid_second_moment;
     return {buoyant_mass * (in.velocity_n / dt + in.gravity) + in.fluid_density * momentum +

@@ -45,6 +45,11 @@ struct RigidUpdateInput {
     /// sub-steps (contact.coupling = "additive") [N]; added to the right side of eq. (13).
     Vec<Dim> external_force = Vec<Dim>::Zero();
     AngularVec<Dim> external_torque = zero_angular<Dim>(); ///< likewise for eq. (14) [N·m]
+    /// coupling.inner_fluid = "volume" (coupling/inner_fluid.hpp): the fluid inside the body now
+    /// and at the step's start, over the cells it covers; eqs. (13')–(14') then take them in place
+    /// of the markers' Σ ΔV_l u_l and of the paper's rigid inner fluid ρf V U^n. Null: the paper's.
+    const InnerFluid<Dim>* inner_fluid = nullptr;
+    const InnerFluid<Dim>* inner_fluid_n = nullptr;
 };
 
 /// The right sides of eqs. (13)–(14), as rates: eq. (13) is mass_rate U^{n+1} = impulse_rate,

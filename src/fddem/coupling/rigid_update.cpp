@@ -2,6 +2,7 @@
 #include "fddem/coupling/rigid_update.hpp"
 
 #include "fddem/core/time_scheme.hpp"
+#include "fddem/coupling/inner_fluid.hpp"
 #include "fddem/coupling/lubrication_coupling.hpp"
 #include "fddem/coupling/marker_routes.hpp"
 #include "fddem/coupling/rigid_coupling.hpp"
@@ -20,17 +21,46 @@ RigidUpdateInput<Dim> input_of(const Particle<Dim>& body, const RigidUpdateSetti
 {
     // Ũ^n, ω̃^n: U^n, ω^n themselves with Euler (w = 0).
     const TimeLevels levels{s.dt, s.history_weight};
-    return {levels.history(body.velocity_n, body.velocity_nm1),
-            levels.history(body.omega_n, body.omega_nm1),
-            body.density,
-            body.volume(),
-            body.inertia_tensor(),
-            s.fluid_density,
-            body.coupling.fluid_second_moment,
-            s.gravity,
-            s.dt,
-            body.contact.mean_force,
-            body.contact.mean_torque};
+    RigidUpdateInput<Dim> in{levels.history(body.velocity_n, body.velocity_nm1),
+                             levels.history(body.omega_n, body.omega_nm1),
+                             body.density,
+                             body.volume(),
+                             body.inertia_tensor(),
+                             s.fluid_density,
+                             body.coupling.fluid_second_moment,
+                             s.gravity,
+                             s.dt,
+                             body.contact.mean_force,
+                             body.contact.mean_torque};
+    if (s.is_inner_fluid_volume) {
+        in.inner_fluid = &body.coupling.inner_fluid; // take_inner_fluid has just set it
+        in.inner_fluid_n = &body.coupling.inner_fluid_n;
+    }
+    return in;
+}
+
+/// coupling.inner_fluid = "volume": ∫_P u dx and ∫_P r × u dx of those of `members` that
+/// eqs. (13)–(14) move, into coupling.inner_fluid, from the current `u` (one sum over the
+/// ranks; every rank calls it with the same members). Nothing without the option.
+template <int Dim>
+void take_inner_fluid(std::span<Particle<Dim>> bodies, std::span<const std::size_t> members,
+                      const MacGrid<Dim>& grid, const FaceField<Dim>& u,
+                      const RigidUpdateSettings<Dim>& s)
+{
+    if (!s.is_inner_fluid_volume) {
+        return;
+    }
+    std::vector<std::size_t> moved;
+    for (const std::size_t b : members) {
+        if (is_moved_by_fluid(bodies[b], s.is_paper_contact)) {
+            moved.push_back(b);
+        }
+    }
+    const std::vector<InnerFluid<Dim>> values =
+        inner_fluid_of<Dim>(std::span<const Particle<Dim>>(bodies), moved, grid, u);
+    for (std::size_t m = 0; m < moved.size(); ++m) {
+        bodies[moved[m]].coupling.inner_fluid = values[m];
+    }
 }
 
 /// U^{n+1}, ω^{n+1} of one body: eqs. (13)–(14) for a free body, the DEM's end state for a free
@@ -282,6 +312,9 @@ double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpda
                   FaceField<Dim>& u)
 {
     interpolate_at_markers<Dim, Kernel>(grid, u, body.coupling); // I(u)
+    const std::size_t self = 0;
+    take_inner_fluid<Dim>(std::span<Particle<Dim>>(&body, 1),
+                          std::span<const std::size_t>(&self, 1), grid, u, s);
     RigidVelocity<Dim> motion;
     const double defect = correct_forcing<Dim, Kernel>(body, grid, s, motion);
     // eq. (16): u ← u + Δt D(λ − λ*). Across a periodic side the ghosts collect what belongs
@@ -318,6 +351,7 @@ double update_group(std::span<Particle<Dim>> bodies, std::span<const std::size_t
     for (const std::size_t b : members) {
         interpolate_at_markers<Dim, Kernel>(grid, u, bodies[b].coupling); // I(u)
     }
+    take_inner_fluid<Dim>(bodies, members, grid, u, s);
     std::vector<RigidVelocity<Dim>> motions(members.size());
     const double defect = correct_linked_forcing<Dim, Kernel>(bodies, members, grid, s, motions);
     for (std::size_t m = 0; m < members.size(); ++m) {
@@ -349,6 +383,13 @@ double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& g
         if (holds_markers_of(grid, body)) {
             interpolate_owned<Dim, Kernel>(grid, u, body.coupling);
         }
+    }
+    if (s.is_inner_fluid_volume) {
+        std::vector<std::size_t> all(bodies.size());
+        for (std::size_t b = 0; b < all.size(); ++b) {
+            all[b] = b;
+        }
+        take_inner_fluid<Dim>(bodies, all, grid, u, s); // from the same u, like I(u)
     }
     double defect = 0.0;
     std::vector<RigidVelocity<Dim>> motions(bodies.size());

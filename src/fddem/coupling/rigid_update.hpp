@@ -52,6 +52,10 @@ struct RigidUpdateSettings {
     /// lubrication.coupling = "implicit": a body's lubrication links (ContactState) enter its
     /// eqs. (13)–(14) as an implicit damping (coupling/lubrication_coupling.hpp)
     bool is_lubrication_implicit = false;
+    /// coupling.inner_fluid = "volume": eqs. (13')–(14') of coupling/inner_fluid.hpp, the fluid
+    /// inside a free body integrated over the cells it covers (its level-n value set at the
+    /// step's start, coupling.inner_fluid_n), not taken from its markers
+    bool is_inner_fluid_volume = false;
 };
 
 /// Whether eqs. (13)–(14) give the body's motion in an outer iteration: a free body, unless the

@@ -337,11 +337,19 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
         }
     }
     check_apart(doc, c.bodies, dimension);
-    if (c.coupling.markers == MarkerLayout::surface && has_free_body(c)) {
+    if (c.coupling.markers == MarkerLayout::surface && has_free_body(c) &&
+        c.coupling.inner_fluid != InnerFluidSource::volume) {
         doc.fail("coupling.markers", doc.node("coupling", "markers"),
                  "the surface layout has no markers inside a body, so eqs. (13)–(14) cannot "
-                 "move a free one: use it with fixed and prescribed bodies only, or \"paper\" "
-                 "or \"retracted\"");
+                 "take a free body's inner fluid from them: set coupling.inner_fluid = "
+                 "\"volume\", or use \"paper\" or \"retracted\"");
+    }
+    if (c.coupling.inner_fluid == InnerFluidSource::volume && has_free_body(c) &&
+        c.time.scheme == TimeScheme::bdf2) {
+        doc.fail("coupling.inner_fluid", doc.node("coupling", "inner_fluid"),
+                 "\"volume\" takes the inner fluid at the step's start, which BDF2's "
+                 "extrapolated level-n motion does not have: use time.scheme = \"euler\" with "
+                 "it, or coupling.inner_fluid = \"markers\"");
     }
 }
 

@@ -101,6 +101,11 @@ constexpr auto case_names(BodySweep /*tag*/)
     return std::to_array<EnumName<BodySweep>>(
         {{sequential, "sequential"}, {simultaneous, "simultaneous"}});
 }
+constexpr auto case_names(InnerFluidSource /*tag*/)
+{
+    using enum InnerFluidSource;
+    return std::to_array<EnumName<InnerFluidSource>>({{markers, "markers"}, {volume, "volume"}});
+}
 constexpr auto case_names(ContactCoupling /*tag*/)
 {
     using enum ContactCoupling;

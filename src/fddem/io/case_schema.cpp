@@ -511,7 +511,7 @@ std::vector<KeySpec> case_schema()
                           "accelerate too slowly; docs/method.md §4) or surface (only that "
                           "outermost ring, markers "
                           "about coupling.marker_spacing_ratio h apart, each owning a shell of "
-                          "thickness h; fixed and prescribed bodies only)."),
+                          "thickness h; free bodies need coupling.inner_fluid = \"volume\")."),
                       &CaseConfig::coupling, &CouplingConfig::markers));
     s.push_back(bound(
         ranged(key("coupling", "marker_retraction", T::real, none, "0.3",
@@ -565,6 +565,16 @@ std::vector<KeySpec> case_schema()
                   "meet get the same answer either way; touching ones converge to the "
                   "same λ by different paths (docs/method.md §4)."),
               &CaseConfig::coupling, &CouplingConfig::body_sweep));
+    s.push_back(
+        bound(key("coupling", "inner_fluid", T::string, none, "\"markers\"",
+                  "Where eqs. (13)–(14) take the fluid inside a free body from: markers (the "
+                  "paper: its markers' interpolated velocities now, and the fluid moving "
+                  "rigidly with the body at the step's start) or volume (the velocity "
+                  "integrated over the cells the body covers, weighted by their volume "
+                  "fractions, now and at the step's start: Kempe & Fröhlich 2012). volume "
+                  "lets the surface marker layout move free bodies; not with time.scheme = "
+                  "\"bdf2\" (docs/method.md §4, \"The fluid inside a body\")."),
+              &CaseConfig::coupling, &CouplingConfig::inner_fluid));
 
     s.push_back(bound(key("contact", "model", T::string, none, "\"linear\"",
                           "Collision model: linear (spring–dashpot F = kα + cα̇, the paper's "

@@ -170,6 +170,11 @@ struct BodyGroupConfig {
 /// How the marker rings fill a body (coupling.markers).
 enum class MarkerLayout { paper, retracted, surface };
 
+/// Where eqs. (13)–(14) take the fluid inside a free body from (coupling.inner_fluid): the
+/// markers that fill it, with the fluid moving rigidly at level n (the paper), or the cells it
+/// covers, at both levels (Kempe & Fröhlich 2012; coupling/inner_fluid.hpp).
+enum class InnerFluidSource { markers, volume };
+
 /// How eqs. (13)–(16) go over the bodies in an outer iteration (coupling.body_sweep).
 enum class BodySweep {
     sequential,  ///< body after body, each reading the fluid the ones before left (Gauss–Seidel)
@@ -182,7 +187,7 @@ struct CouplingConfig {
     double marker_spacing_ratio = 1.4;   ///< h_L / h when n_rings is not given
     /// Where the marker rings go: the paper's layout (the last ring h_L/2 inside the surface) or
     /// the outermost ring `marker_retraction` h inside it (issue 13; docs/method.md §4), or that
-    /// ring alone (fixed and prescribed bodies only)
+    /// ring alone (free bodies then need inner_fluid = volume)
     MarkerLayout markers = MarkerLayout::paper;
     double marker_retraction = 0.3; ///< in grid spacings h (Breugem 2012)
     /// Eqs. (15)–(16) between the momentum solve and the pressure correction, so that each
@@ -197,7 +202,8 @@ struct CouplingConfig {
     /// Eq. (15)'s correction divided at each marker by max(1, the forcing operator's row sum)
     /// (coupling/forcing_gain.hpp), so that no slip mode overshoots
     bool is_forcing_normalised = false;
-    BodySweep body_sweep = BodySweep::sequential; ///< coupling.body_sweep
+    BodySweep body_sweep = BodySweep::sequential;             ///< coupling.body_sweep
+    InnerFluidSource inner_fluid = InnerFluidSource::markers; ///< coupling.inner_fluid
 };
 
 /// What the reader derives for the DEM collision model (eq. (18)) from [contact] and the bodies.

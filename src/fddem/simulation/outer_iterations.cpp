@@ -65,7 +65,9 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
       is_wall_marker_off_(config.coupling.is_wall_marker_off),
       is_adjoint_at_walls_(config.coupling.is_adjoint_at_walls),
       is_simultaneous_(config.coupling.body_sweep == BodySweep::simultaneous),
-      is_lubrication_implicit_(config.lubrication.is_implicit()), scheme_(config.time.scheme),
+      is_lubrication_implicit_(config.lubrication.is_implicit()),
+      is_inner_fluid_volume_(config.coupling.inner_fluid == InnerFluidSource::volume),
+      scheme_(config.time.scheme),
       poisson_(make_poisson_solver<Dim>(
           grid, bc.is_periodic,
           PoissonSettings{config.simple.pressure_solver, config.simple.linear_tolerance,
@@ -396,7 +398,8 @@ void OuterIterations<Dim>::couple_bodies(int k, double velocity_scale, const Ste
         bodies.all(), grid_, kernel_,
         RigidUpdateSettings<Dim>{properties_.density, gravity_, in.levels.dt_effective,
                                  is_paper_contact_, in.levels.history_weight, is_wall_marker_off_,
-                                 is_simultaneous_, adjoint_walls(), is_lubrication_implicit_},
+                                 is_simultaneous_, adjoint_walls(), is_lubrication_implicit_,
+                                 is_inner_fluid_volume_},
         state.u); // eqs. (13)–(16)
     if (scale <= std::numeric_limits<double>::min()) {
         // Fluid and bodies at rest until this update (the first iteration of a run from rest):

@@ -164,7 +164,8 @@ private:
     bool is_simultaneous_;     ///< coupling.body_sweep = "simultaneous"
     /// lubrication.enabled with lubrication.coupling = "implicit"
     bool is_lubrication_implicit_;
-    TimeScheme scheme_; ///< time.scheme
+    bool is_inner_fluid_volume_; ///< coupling.inner_fluid = "volume"
+    TimeScheme scheme_;          ///< time.scheme
     double dt_ = 0.0;
 
     std::vector<MomentumSystem<Dim>> systems_;

@@ -8,6 +8,7 @@
 #include "fddem/bodies/kinematics.hpp"
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/hydrodynamic_force.hpp"
+#include "fddem/coupling/inner_fluid.hpp"
 #include "fddem/coupling/lubrication_coupling.hpp"
 #include "fddem/coupling/marker_placement.hpp"
 #include "fddem/coupling/marker_routes.hpp"
@@ -241,6 +242,21 @@ void Simulation<Dim>::begin_step()
         body.omega_nm1 = body.omega_n;
         body.velocity_n = body.velocity;
         body.omega_n = body.omega;
+    }
+    if (config_.coupling.inner_fluid == InnerFluidSource::volume) {
+        // eqs. (13')–(14') (coupling/inner_fluid.hpp): the fluid inside each free body at level
+        // n, over the cells it covers at X^n, where the step's markers stay
+        std::vector<std::size_t> free;
+        for (std::size_t b = 0; b < bodies_.size(); ++b) {
+            if (bodies_.all()[b].is_free()) {
+                free.push_back(b);
+            }
+        }
+        const std::vector<InnerFluid<Dim>> values = inner_fluid_of<Dim>(
+            std::span<const Particle<Dim>>(bodies_.all()), free, grid_, state_.u_n);
+        for (std::size_t m = 0; m < free.size(); ++m) {
+            bodies_.all()[free[m]].coupling.inner_fluid_n = values[m];
+        }
     }
 }
 

@@ -323,6 +323,17 @@ TEST(CheckpointRestart, AdaptiveCollisionsKeepTheirConstantsBitForBit)
     EXPECT_GT(in_contact, 0);
 }
 
+TEST(CheckpointRestart, SurfaceRingsWithTheInnerFluidFromTheCellsContinueBitForBit)
+{
+    // coupling.inner_fluid = "volume" takes the level-n inner fluid at each step's start from
+    // u^n, which the checkpoint holds: nothing more needs writing.
+    const CaseConfig config =
+        read_case_string(falling_balls_case(2), "test:surface disks",
+                         {"coupling.markers=\"surface\"", "coupling.inner_fluid=\"volume\""});
+    const int in_contact = expect_bit_identical_continuation<2>(config, 21, 8);
+    EXPECT_GT(in_contact, 0) << "the checkpoint should catch a contact in flight";
+}
+
 TEST(CheckpointRestart, SphereOnTheFloorContinuesBitForBit3D)
 {
     const CaseConfig config = read_case_string(falling_balls_case(3), "test:sphere");
