@@ -1,39 +1,14 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/coupling/inner_fluid.hpp"
 
+#include "fddem/grid/loops.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 
 namespace fddem {
 namespace {
-
-/// Calls f(i) for every index of [lo, hi] (inclusive), the first axis fastest, in a fixed order,
-/// on this thread: the sums it feeds are then the same from run to run.
-template <int Dim, class F>
-void for_each_in(const Index<Dim>& lo, const Index<Dim>& hi, F&& f)
-{
-    for (int d = 0; d < Dim; ++d) {
-        if (hi[static_cast<std::size_t>(d)] < lo[static_cast<std::size_t>(d)]) {
-            return;
-        }
-    }
-    Index<Dim> i = lo;
-    while (true) {
-        f(i);
-        int d = 0;
-        for (; d < Dim; ++d) {
-            const auto k = static_cast<std::size_t>(d);
-            if (++i[k] <= hi[k]) {
-                break;
-            }
-            i[k] = lo[k];
-        }
-        if (d == Dim) {
-            return;
-        }
-    }
-}
 
 /// The number of doubles an InnerFluid packs into.
 template <int Dim>
@@ -98,6 +73,12 @@ InnerFluid<Dim> inner_fluid_part(const MacGrid<Dim>& grid, const FaceField<Dim>&
                                  const Vec<Dim>& centre, double radius)
 {
     InnerFluid<Dim> sum;
+    if (!centre.allFinite() || !std::isfinite(radius)) {
+        // Not reached from a run (place_markers stops a body that is not finite first); NaN
+        // rather than a loop over indices cast from NaN.
+        sum.momentum.fill(std::nan(""));
+        return sum;
+    }
     const Vec<Dim>& h = grid.spacing();
     const Vec<Dim>& origin = grid.origin();
     const double cell_volume = grid.cell_volume();
@@ -106,19 +87,20 @@ InnerFluid<Dim> inner_fluid_part(const MacGrid<Dim>& grid, const FaceField<Dim>&
         // each face's control volume is the cell [x − h/2, x + h/2] about it.
         Vec<Dim> shift = Vec<Dim>::Constant(0.5);
         shift[a] = 0.0;
+        // The faces whose control volumes may meet the ball, one more on each side.
         Index<Dim> lo{};
-        Index<Dim> hi{};
+        Index<Dim> hi{}; // past the last
         for (int d = 0; d < Dim; ++d) {
             const auto k = static_cast<std::size_t>(d);
-            lo[k] =
-                static_cast<int>(std::floor((centre[d] - radius - origin[d]) / h[d] - shift[d])) -
-                1;
-            hi[k] =
-                static_cast<int>(std::ceil((centre[d] + radius - origin[d]) / h[d] - shift[d])) + 1;
+            const double first = (centre[d] - radius - origin[d]) / h[d] - shift[d];
+            const double last = (centre[d] + radius - origin[d]) / h[d] - shift[d];
+            lo[k] = static_cast<int>(std::floor(first)) - 1;
+            hi[k] = static_cast<int>(std::ceil(last)) + 2;
         }
         const Box<Dim> owned = grid.owned_faces(a);
         const GridArray<Dim>& component = u[a];
-        for_each_in<Dim>(lo, hi, [&](const Index<Dim>& i) {
+        // Serially, in a fixed order: the sum is then the same from run to run.
+        for_each_cell_in_vtk_order<Dim>(Box<Dim>{lo, hi}, [&](const Index<Dim>& i) {
             Index<Dim> j = i; // the face itself, i its image about the body
             for (int d = 0; d < Dim; ++d) {
                 const auto k = static_cast<std::size_t>(d);
@@ -167,6 +149,24 @@ std::vector<InnerFluid<Dim>> inner_fluid_of(std::span<const Particle<Dim>> bodie
     return result;
 }
 
+template <int Dim>
+void take_inner_fluid_of_free_bodies(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                                     const FaceField<Dim>& u,
+                                     InnerFluid<Dim> MarkerCoupling<Dim>::*field)
+{
+    std::vector<std::size_t> free;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        if (bodies[b].is_free()) {
+            free.push_back(b);
+        }
+    }
+    const std::vector<InnerFluid<Dim>> values =
+        inner_fluid_of<Dim>(std::span<const Particle<Dim>>(bodies), free, grid, u);
+    for (std::size_t m = 0; m < free.size(); ++m) {
+        bodies[free[m]].coupling.*field = values[m];
+    }
+}
+
 template double ball_volume_fraction<2>(const Vec<2>&, const Vec<2>&, const Vec<2>&,
                                         double) noexcept;
 template double ball_volume_fraction<3>(const Vec<3>&, const Vec<3>&, const Vec<3>&,
@@ -181,5 +181,11 @@ template std::vector<InnerFluid<2>> inner_fluid_of<2>(std::span<const Particle<2
 template std::vector<InnerFluid<3>> inner_fluid_of<3>(std::span<const Particle<3>>,
                                                       std::span<const std::size_t>,
                                                       const MacGrid<3>&, const FaceField<3>&);
+template void take_inner_fluid_of_free_bodies<2>(std::span<Particle<2>>, const MacGrid<2>&,
+                                                 const FaceField<2>&,
+                                                 InnerFluid<2> MarkerCoupling<2>::*);
+template void take_inner_fluid_of_free_bodies<3>(std::span<Particle<3>>, const MacGrid<3>&,
+                                                 const FaceField<3>&,
+                                                 InnerFluid<3> MarkerCoupling<3>::*);
 
 } // namespace fddem

@@ -16,7 +16,9 @@
 ///                               M_e
 ///
 /// (the body's equation of motion with F_H = −ρf Σ ΔV λ + ρf d/dt ∫_P u dx, λ* of the pass
-/// before), both integrals over the body at X^n, where the step's markers are.
+/// before), both integrals over the body at X^n, where the step's markers are. Bodies are balls
+/// (bodies/ball.hpp): the integrals are over a ball, and with a rigid inner fluid eq. (14')
+/// equals the paper's (14) because a ball's fluid inertia is isotropic, ω × (J_f ω) = 0.
 ///
 /// ∫_P f dx ≈ Σ α_f f_f ΔV over the faces f of each velocity component, α_f the fraction of the
 /// face's control volume (a cell centred on the face) inside the body. α_f is Kempe & Fröhlich's
@@ -52,5 +54,12 @@ template <int Dim>
 [[nodiscard]] std::vector<InnerFluid<Dim>>
 inner_fluid_of(std::span<const Particle<Dim>> bodies, std::span<const std::size_t> members,
                const MacGrid<Dim>& grid, const FaceField<Dim>& u);
+
+/// inner_fluid_of every free body of `bodies`, into its coupling.*`field` (inner_fluid_n at a
+/// step's start, inner_fluid at its end, for the force it reports). Every rank calls it.
+template <int Dim>
+void take_inner_fluid_of_free_bodies(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                                     const FaceField<Dim>& u,
+                                     InnerFluid<Dim> MarkerCoupling<Dim>::*field);
 
 } // namespace fddem

@@ -344,6 +344,12 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
                  "take a free body's inner fluid from them: set coupling.inner_fluid = "
                  "\"volume\", or use \"paper\" or \"retracted\"");
     }
+    if (c.coupling.inner_fluid == InnerFluidSource::volume && c.coupling.is_wall_marker_off) {
+        doc.fail("coupling.inner_fluid", doc.node("coupling", "inner_fluid"),
+                 "\"volume\" integrates the fluid inside a body as it is, so the markers "
+                 "coupling.markers_off_at_walls silences would not have their fluid taken as the "
+                 "body's: use one option or the other");
+    }
     if (c.coupling.inner_fluid == InnerFluidSource::volume && has_free_body(c) &&
         c.time.scheme == TimeScheme::bdf2) {
         doc.fail("coupling.inner_fluid", doc.node("coupling", "inner_fluid"),

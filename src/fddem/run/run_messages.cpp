@@ -131,7 +131,8 @@ void report_derived_values(const CaseConfig& config, RunMonitor& monitor)
         config.coupling.marker_spacing_ratio > 1.0) {
         // Measured (docs/method.md §4, "The fluid inside a body"): ten Cate's E4 sphere at
         // d/h 8.25 falls 6.1 % faster than Table 2 with the shell's markers 1.4 h apart and
-        // 1.2 % faster with them h apart; the hat kernel's reach is h.
+        // 1.2 % faster with them h apart (hat kernel; measured with it only, so said of every
+        // kernel: the wider ones reach further, and no run says how much they close the gaps).
         monitor.message(fmt::format(
             "warning: coupling.markers = \"surface\" on spheres with markers {:g} h apart: the "
             "shell leaks between them (a settling sphere 6 % fast at 1.4 h, 1.2 % at 1.0 h); "

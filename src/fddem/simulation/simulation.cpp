@@ -246,17 +246,8 @@ void Simulation<Dim>::begin_step()
     if (config_.coupling.inner_fluid == InnerFluidSource::volume) {
         // eqs. (13')–(14') (coupling/inner_fluid.hpp): the fluid inside each free body at level
         // n, over the cells it covers at X^n, where the step's markers stay
-        std::vector<std::size_t> free;
-        for (std::size_t b = 0; b < bodies_.size(); ++b) {
-            if (bodies_.all()[b].is_free()) {
-                free.push_back(b);
-            }
-        }
-        const std::vector<InnerFluid<Dim>> values = inner_fluid_of<Dim>(
-            std::span<const Particle<Dim>>(bodies_.all()), free, grid_, state_.u_n);
-        for (std::size_t m = 0; m < free.size(); ++m) {
-            bodies_.all()[free[m]].coupling.inner_fluid_n = values[m];
-        }
+        take_inner_fluid_of_free_bodies<Dim>(bodies_.all(), grid_, state_.u_n,
+                                             &MarkerCoupling<Dim>::inner_fluid_n);
     }
 }
 
@@ -316,6 +307,13 @@ template <int Dim>
 void Simulation<Dim>::move_bodies_and_markers(const TimeLevels& levels)
 {
     const double dt = clock_.dt;
+    const bool is_inner_fluid_volume = config_.coupling.inner_fluid == InnerFluidSource::volume;
+    if (is_inner_fluid_volume) {
+        // The reported force's inner fluid at the step's end, every rank (before the owners
+        // measure): the body's momentum balance of eqs. (13')–(14'), DEM-moved bodies too.
+        take_inner_fluid_of_free_bodies<Dim>(bodies_.all(), grid_, state_.u,
+                                             &MarkerCoupling<Dim>::inner_fluid);
+    }
     std::vector<int> owners;
     std::vector<char> held_before; // the bodies whose markers this rank may hand over
     if (is_owner_split()) {
@@ -326,12 +324,14 @@ void Simulation<Dim>::move_bodies_and_markers(const TimeLevels& levels)
             owners.push_back(owner_rank(grid_, body));
             if (owners.back() == me) {
                 measure_hydrodynamic_forces<Dim>(std::span<Particle<Dim>>(&body, 1),
-                                                 properties_.density, levels);
+                                                 properties_.density, levels,
+                                                 is_inner_fluid_volume);
             }
         }
         share_loads<Dim>(bodies_.all(), grid_);
     } else {
-        measure_hydrodynamic_forces<Dim>(bodies_.all(), properties_.density, levels);
+        measure_hydrodynamic_forces<Dim>(bodies_.all(), properties_.density, levels,
+                                         is_inner_fluid_volume);
     }
     move_bodies<Dim>(bodies_.all(), dt, contacts_ && contacts_->is_paper_coupling); // eq. (17)
     wrap_centres<Dim>(bodies_.all(), grid_.domain()); // re-entering across periodic sides

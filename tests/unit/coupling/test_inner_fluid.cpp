@@ -4,6 +4,7 @@
 
 #include "fddem/coupling/inner_fluid.hpp"
 #include "fddem/coupling/rigid_coupling.hpp"
+#include "fddem/grid/loops.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,21 +24,8 @@ FaceField<Dim> field_of(const MacGrid<Dim>& grid, F&& velocity)
     FaceField<Dim> u(grid);
     for (int a = 0; a < Dim; ++a) {
         const Box<Dim> faces = grid.face_box(a);
-        Index<Dim> i = faces.lo;
-        while (true) {
-            u[a](i) = velocity(grid.face_centre(a, i))[a];
-            int d = 0;
-            for (; d < Dim; ++d) {
-                const auto k = static_cast<std::size_t>(d);
-                if (++i[k] < faces.hi[k]) {
-                    break;
-                }
-                i[k] = faces.lo[k];
-            }
-            if (d == Dim) {
-                break;
-            }
-        }
+        for_each_cell_in_vtk_order<Dim>(
+            faces, [&](const Index<Dim>& i) { u[a](i) = velocity(grid.face_centre(a, i))[a]; });
     }
     return u;
 }
@@ -157,6 +145,27 @@ TEST(InnerFluid, WithTheInnerFluidMovingRigidlyEqs13And14AreThePapers)
     EXPECT_NEAR(cells.moment_rate, paper.moment_rate, 1e-9 * std::abs(paper.moment_rate));
     EXPECT_EQ(cells.mass_rate, paper.mass_rate);
     EXPECT_EQ(cells.inertia_rate, paper.inertia_rate);
+}
+
+TEST(InnerFluid, TheInnerFluidsChangeOverTheStepMovesTheBodyByEq13)
+{
+    // No markers, no gravity's excess (ρs = 2ρf, g along −y), at rest at level n: eq. (13')
+    // is ρs V U^{n+1}/Δt = (ρs − ρf) V g + ρf (∫u − ∫u^n)/Δt, so with the inner fluid's momentum
+    // grown by V (3, 0) over the step, U^{n+1} = (ρf/ρs)(3, 0) + ((ρs − ρf)/ρs) g Δt. A sign or a
+    // Δt wrong in either term moves the answer.
+    const double volume = 0.2;
+    const double dt = 0.01;
+    RigidUpdateInput<2> in{Vec<2>::Zero(),     0.0, 2000.0, volume, 50.0, 1000.0, 0.0,
+                           Vec<2>(0.0, -10.0), dt};
+    const InnerFluid<2> before{Vec<2>(1.0, 1.0) * volume, 0.5};
+    const InnerFluid<2> now{Vec<2>(4.0, 1.0) * volume, 0.5 + 0.04};
+    in.inner_fluid = &now;
+    in.inner_fluid_n = &before;
+    const RigidVelocity<2> motion = rigid_velocity<2>(in, {}, {}, {}, {});
+    EXPECT_NEAR(motion.velocity.x(), 0.5 * 3.0, 1e-12);
+    EXPECT_NEAR(motion.velocity.y(), 0.5 * -10.0 * dt, 1e-12);
+    // eq. (14'): J_s ω^{n+1}/Δt = ρf (∫r×u − ∫r×u^n)/Δt: ω = 1000 · 0.04/50.
+    EXPECT_NEAR(motion.omega, 1000.0 * 0.04 / 50.0, 1e-12);
 }
 
 } // namespace
