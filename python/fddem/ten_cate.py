@@ -52,7 +52,10 @@ def compare(run_dir, directory, case):
       w), relative to u_max;
     - travel_rms: RMS of the distance travelled, (gap(0) − gap(t)) of fddem against that of the
       digitised curve (whose first point is its start; the curve sits about 0.16 d above the
-      nominal 8 d release height, which waLBerla corrects by a 0.25 d shift), in d.
+      nominal 8 d release height, which waLBerla corrects by a 0.25 d shift), in d;
+    - deceleration_gaps: the gaps [d] at which |w| falls to 0.9, 0.7 and 0.5 of its largest value
+      (deceleration_gaps), and reference_deceleration_gaps the experiment's (nan where its
+      digitised curves end before).
     """
     u_max = CASES[case][0]
     t, gap, w = sphere_history(run_dir)
@@ -71,6 +74,8 @@ def compare(run_dir, directory, case):
     ref_travel = ref_gap[0, 1] - ref_gap[in_gap, 1]
     result["travel_rms"] = float(np.sqrt(np.mean((mine_travel - ref_travel) ** 2)))
     result["compared_until"] = float(t_end)
+    result["deceleration_gaps"] = deceleration_gaps(gap, w)
+    result["reference_deceleration_gaps"] = reference_deceleration_gaps(directory, case)
     return result
 
 
@@ -86,3 +91,66 @@ def plot(run_dir, directory, case, axes_w, axes_gap, label="fddem"):
     axes_gap.plot(ref_gap[:, 0], ref_gap[:, 1], "k.", markersize=3, label="ten Cate et al. 2002")
     axes_gap.set_xlabel("t [s]")
     axes_gap.set_ylabel("gap / d")
+
+
+def deceleration_gaps(gap, w, fractions=(0.9, 0.7, 0.5)):
+    """The gaps (in d) at which |w| first falls below each fraction of its largest value, after
+    that largest value: where the floor begins to slow the sphere, in the floor's own coordinate.
+    A history compared in time mixes this with the start height and the plateau speed; compared
+    in the gap it does not. (gap, w) in time order; w of either sign. nan where |w| never falls
+    that low."""
+    speed = np.abs(np.asarray(w, dtype=float))
+    gap = np.asarray(gap, dtype=float)
+    top = int(np.argmax(speed))
+    speed, gap = speed[top:] / speed[top], gap[top:]
+    result = []
+    for fraction in fractions:
+        below = np.nonzero(speed < fraction)[0]
+        if below.size == 0:
+            result.append(float("nan"))
+            continue
+        j = below[0]  # j ≥ 1: speed[0] = 1
+        share = (speed[j - 1] - fraction) / (speed[j - 1] - speed[j])
+        result.append(float(gap[j - 1] + share * (gap[j] - gap[j - 1])))
+    return result
+
+
+def reference_deceleration_gaps(directory, case, fractions=(0.9, 0.7, 0.5), gap_from="5a"):
+    """deceleration_gaps of the experiment: Fig. 5b's w at the gap of the same instant, read
+    from Fig. 5a (gap_from="5a": 5a interpolated in time; only 5b points within 5a's time span)
+    or from Fig. 5b itself (gap_from="5b": the nominal 8 d release height less the integral of
+    5b from w = 0 at t = 0). The two figures do not agree (reference_consistency), so the two
+    readings bracket the experiment."""
+    ref_gap, ref_w = load_curves(directory, case)
+    if gap_from == "5b":
+        t = np.concatenate([[0.0], ref_w[:, 0]])
+        w = np.concatenate([[0.0], ref_w[:, 1]])
+        fall = np.cumsum(0.5 * (w[1:] + w[:-1]) * np.diff(t)) / DIAMETER
+        return deceleration_gaps(8.0 + fall, ref_w[:, 1], fractions)
+    inside = (ref_w[:, 0] >= ref_gap[0, 0]) & (ref_w[:, 0] <= ref_gap[-1, 0])
+    gap = np.interp(ref_w[inside, 0], ref_gap[:, 0], ref_gap[:, 1])
+    return deceleration_gaps(gap, ref_w[inside, 1], fractions)
+
+
+def reference_consistency(directory, case):
+    """How far the digitised Fig. 5a and 5b and Table 2 agree with each other, as a dict:
+    - peak_w: Fig. 5b's largest |w| [m/s], and peak_w_error against Table 2's u_max;
+    - gap_speed: the mean speed of Fig. 5a over its plateau [m/s] (least-squares slope of gap(t)
+      while 2 d < gap < 6 d, times d), and gap_speed_error against Table 2's u_max;
+    - travel_mismatch: the largest |travel by 5a − travel by ∫ 5b dt| while the gap exceeds 1 d
+      [d], the travels counted from 5a's first time (5b integrated from w = 0 at t = 0).
+    None of this uses a run: it is the reference's own spread, beside which a run is judged."""
+    u_max = CASES[case][0]
+    ref_gap, ref_w = load_curves(directory, case)
+    plateau = (ref_gap[:, 1] > 2.0) & (ref_gap[:, 1] < 6.0)
+    slope = np.polyfit(ref_gap[plateau, 0], ref_gap[plateau, 1], 1)[0]
+    t = np.concatenate([[0.0], ref_w[:, 0]])
+    w = np.concatenate([[0.0], ref_w[:, 1]])
+    fall = np.concatenate([[0.0], np.cumsum(0.5 * (w[1:] + w[:-1]) * np.diff(t))]) / DIAMETER
+    above = ref_gap[:, 1] > 1.0
+    travel_5a = ref_gap[0, 1] - ref_gap[above, 1]
+    travel_5b = np.interp(ref_gap[0, 0], t, fall) - np.interp(ref_gap[above, 0], t, fall)
+    peak = float(np.max(np.abs(ref_w[:, 1])))
+    return {"peak_w": peak, "peak_w_error": peak / u_max - 1.0,
+            "gap_speed": float(-slope * DIAMETER), "gap_speed_error": float(-slope * DIAMETER / u_max - 1.0),
+            "travel_mismatch": float(np.max(np.abs(travel_5a - travel_5b)))}

@@ -381,6 +381,38 @@ class TenCate(unittest.TestCase):
         self.assertGreater(fast["w_rms"], 0.05)
         self.assertGreater(fast["travel_rms"], 0.3)
 
+    def test_deceleration_gaps_of_an_exponential_approach(self):
+        # |w| = 1 − exp(−gap/0.3) while the gap closes from 5 d: it falls to f at gap −0.3 ln(1 − f).
+        gap = np.linspace(5.0, 0.0, 5001)
+        w = -(1.0 - np.exp(-gap / 0.3))
+        gaps = ten_cate.deceleration_gaps(gap, w)
+        for fraction, found in zip((0.9, 0.7, 0.5), gaps):
+            self.assertAlmostEqual(found, -0.3 * np.log(1.0 - fraction), delta=2e-3)
+        # Before the largest speed nothing counts: a sphere still accelerating is not slowing.
+        rising = np.concatenate([np.linspace(0.0, -0.5, 50), w])
+        self.assertAlmostEqual(ten_cate.deceleration_gaps(np.concatenate([np.full(50, 6.0), gap]), rising)[0],
+                               gaps[0], delta=1e-12)
+        self.assertTrue(np.isnan(ten_cate.deceleration_gaps(gap, np.full_like(gap, -1.0))[0]))
+
+    def test_the_digitised_figures_disagree_with_each_other(self):
+        # Measured by hand from the files (the slope of Fig. 5a between gap 2 d and 6 d, the
+        # trapezoidal integral of Fig. 5b): E1's Fig. 5b peaks 2.9 % above Table 2 while Fig. 5a
+        # falls 1.4 % slower than it, and the two travels part by 0.28 d before the floor.
+        e1 = ten_cate.reference_consistency(ten_cate.reference_directory(), "E1")
+        self.assertAlmostEqual(e1["peak_w"], 0.03702, delta=5e-5)
+        self.assertAlmostEqual(e1["gap_speed_error"], -0.014, delta=2e-3)
+        self.assertAlmostEqual(e1["travel_mismatch"], 0.28, delta=0.01)
+        # The two readings of the experiment's slowing bracket it: E1 reaches 0.9 u_max at
+        # 1.25 d by Fig. 5a's gap and at 0.75 d by Fig. 5b's own integral from 8 d.
+        by_5a = ten_cate.reference_deceleration_gaps(ten_cate.reference_directory(), "E1")
+        by_5b = ten_cate.reference_deceleration_gaps(ten_cate.reference_directory(), "E1",
+                                                     gap_from="5b")
+        self.assertAlmostEqual(by_5a[0], 1.25, delta=0.01)
+        self.assertAlmostEqual(by_5b[0], 0.75, delta=0.01)
+        e4 = ten_cate.reference_consistency(ten_cate.reference_directory(), "E4")
+        self.assertAlmostEqual(e4["peak_w_error"], 0.1233 / 0.12224 - 1.0, delta=1e-3)
+        self.assertAlmostEqual(e4["gap_speed_error"], -0.044, delta=2e-3)
+
 
 class ImpulsiveCylinder(unittest.TestCase):
     """tools/compare_impulsive_cylinder.py's measures on runs that follow the Koumoutsakos &
