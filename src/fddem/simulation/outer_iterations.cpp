@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/simulation/outer_iterations.hpp"
 
+#include "fddem/contact/cell_list.hpp"
 #include "fddem/core/errors.hpp"
 #include "fddem/coupling/force_spreading.hpp"
 #include "fddem/coupling/marker_routes.hpp"
@@ -14,7 +15,9 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 #include <variant>
+#include <vector>
 
 namespace fddem {
 namespace {
@@ -226,11 +229,14 @@ bool OuterIterations<Dim>::is_any_body_near_contact(const Particles<Dim>& bodies
         [](const auto& kernel) { return std::decay_t<decltype(kernel)>::half_width; }, kernel_);
     const double near = 2.0 * half_width * grid_.spacing().maxCoeff();
     const PeriodicDomain<Dim> domain = grid_.domain();
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        const Particle<Dim>& body = bodies[i];
+    double largest_radius = 0.0;
+    bool has_free_body = false;
+    for (const Particle<Dim>& body : bodies) {
+        largest_radius = std::max(largest_radius, body.radius());
         if (!body.is_free()) {
             continue;
         }
+        has_free_body = true;
         if (body.contact.is_in_contact || !body.contact.lubrication_links.empty()) {
             return true;
         }
@@ -241,17 +247,27 @@ bool OuterIterations<Dim>::is_any_body_near_contact(const Particles<Dim>& bodies
                 return true;
             }
         }
-        // Every pair with a free body once: a pair of free bodies from its first (a cell list
-        // would be needed for tens of thousands of bodies).
-        for (std::size_t j = 0; j < bodies.size(); ++j) {
-            if (j == i || (j < i && bodies[j].is_free())) {
-                continue;
-            }
-            if (domain.minimum_image(bodies[j].centre - body.centre).norm() - body.radius() -
-                    bodies[j].radius() <
-                near) {
-                return true;
-            }
+    }
+    if (!has_free_body || bodies.size() < 2) {
+        return false;
+    }
+    // Every pair with a free body whose surfaces are closer than `near`: its centres are closer
+    // than 2 R_max + near, so a cell list of that range finds it (contact/cell_list.hpp; linear
+    // in the bodies, where testing every pair was quadratic).
+    std::vector<Vec<Dim>> centres;
+    centres.reserve(bodies.size());
+    for (const Particle<Dim>& body : bodies) {
+        centres.push_back(body.centre);
+    }
+    CellList<Dim> cells(domain, 2.0 * largest_radius + near);
+    std::vector<std::pair<int, int>> pairs;
+    cells.find_pairs(centres, pairs);
+    for (const auto& [i, j] : pairs) {
+        const Particle<Dim>& a = bodies[static_cast<std::size_t>(i)];
+        const Particle<Dim>& b = bodies[static_cast<std::size_t>(j)];
+        if ((a.is_free() || b.is_free()) &&
+            domain.minimum_image(b.centre - a.centre).norm() - a.radius() - b.radius() < near) {
+            return true;
         }
     }
     return false;
