@@ -573,7 +573,8 @@ std::vector<KeySpec> case_schema()
                   "integrated over the cells the body covers, weighted by their volume "
                   "fractions, now and at the step's start: Kempe & Fröhlich 2012). volume "
                   "lets the surface marker layout move free bodies; not with time.scheme = "
-                  "\"bdf2\" (docs/method.md §4, \"The fluid inside a body\")."),
+                  "\"bdf2\" nor coupling.markers_off_at_walls (docs/method.md §4, \"The fluid "
+                  "inside a body\")."),
               &CaseConfig::coupling, &CouplingConfig::inner_fluid));
 
     s.push_back(bound(key("contact", "model", T::string, none, "\"linear\"",
