@@ -23,13 +23,15 @@ class SplitInnerFluidTest : public ::testing::Test {
 using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
 TYPED_TEST_SUITE(SplitInnerFluidTest, Dimensions);
 
-/// A smooth velocity with no symmetry about the bodies, on every face `grid` owns.
+/// A smooth velocity with no symmetry about the bodies, on every face `grid` stores.
 template <int Dim>
 FaceField<Dim> smooth_field(const MacGrid<Dim>& grid)
 {
     FaceField<Dim> u(grid);
     for (int a = 0; a < Dim; ++a) {
-        const Box<Dim> faces = grid.owned_faces(a);
+        // Every stored face, ghosts too (as a halo fill leaves them): a face counted by a rank
+        // that does not own it would then count twice.
+        const Box<Dim> faces = grid.storage_box();
         for_each_cell_in_vtk_order<Dim>(faces, [&](const Index<Dim>& i) {
             const Vec<Dim> x = grid.face_centre(a, i);
             double value = 1.0 + a;
