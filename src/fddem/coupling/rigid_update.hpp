@@ -2,7 +2,9 @@
 #pragma once
 /// The fictitious-domain stage of one SIMPLE outer iteration, for every body (paper §2.3):
 ///   I:        u_l = I(u) at each marker;
-///   eqs. (13)–(14): U, ω of a free body from ∫_P (u/Δt − λ*) and its level-n motion;
+///   eqs. (13)–(14): U, ω of a free body from ∫_P (u/Δt − λ*) and its level-n motion; with
+///                   coupling.inner_fluid = "volume" eqs. (13')–(14') of coupling/inner_fluid.hpp,
+///                   ∫_P u over the cells now and at the step's start instead;
 ///   eq. (15): λ = λ* + (U + ω × r − u_l)/Δt;
 ///   eq. (16): u ← u + Δt D(λ − λ*), then λ* ← λ.
 /// The per-body formulas are in rigid_coupling.hpp; this file applies them to the grid.

@@ -233,7 +233,8 @@ private:
     /// Δt of the next step by time.max_courant or time.steady (time_step_control.hpp).
     void choose_time_step();
     /// Keeps the level-n state: u^{n−1} ← u^n ← u, U^{n−1} ← U^n ← U, ω^{n−1} ← ω^n ← ω
-    /// (λ* = λ^n already).
+    /// (λ* = λ^n already); with coupling.inner_fluid = "volume" also each free body's ∫_P u^n
+    /// (eqs. (13')–(14'), coupling/inner_fluid.hpp).
     void begin_step();
     /// eq. (18): the DEM sub-steps over the whole step, from the level-n state, with the
     /// buoyant weight held over them.
