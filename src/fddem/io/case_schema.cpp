@@ -398,6 +398,15 @@ std::vector<KeySpec> case_schema()
                                  "\"Anderson mixing and the same answer\")."),
                              0, 52, false, false),
                       &CaseConfig::simple, &SimpleConfig::acceleration_weight_bits));
+    s.push_back(bound(
+        ranged(key("simple", "acceleration_max_step", T::real, "", "0",
+                   "The largest step the Anderson acceleration may take beyond an outer "
+                   "iteration's output, as a multiple of that iteration's change of the bodies' "
+                   "velocities; a larger one is refused and the mixing restarts (0: not "
+                   "bounded; 100 still accelerates modes that contract by up to 0.99 an "
+                   "iteration; docs/method.md §4, \"The mixing's step bounded\")."),
+               0.0, 1e6, false, false),
+        &CaseConfig::simple, &SimpleConfig::acceleration_max_step));
     s.push_back(
         bound(ranged(key("simple", "momentum_sweeps", T::integer, none, "4",
                          "Red-black Gauss–Seidel sweeps of the momentum equations per V-cycle "

@@ -132,9 +132,10 @@ double round_to_significant_bits(double x, int bits)
     return std::ldexp(std::nearbyint(std::ldexp(mantissa, bits)), exponent - bits);
 }
 
-AndersonMixing::AndersonMixing(int depth, int weight_bits)
+AndersonMixing::AndersonMixing(int depth, int weight_bits, double max_step_ratio)
     : depth_(std::max(depth, 0)), weight_bits_(std::max(weight_bits, 0)),
-      delta_f_(static_cast<std::size_t>(depth_)), delta_g_(static_cast<std::size_t>(depth_)),
+      max_step_ratio_(std::max(max_step_ratio, 0.0)), delta_f_(static_cast<std::size_t>(depth_)),
+      delta_g_(static_cast<std::size_t>(depth_)),
       gram_(static_cast<std::size_t>(depth_ * depth_), 0.0)
 {
 }
@@ -145,6 +146,7 @@ void AndersonMixing::reset() noexcept
     columns_ = 0;
     newest_ = -1;
     gamma_.clear();
+    step_ratio_ = 0.0;
 }
 
 void AndersonMixing::remember(std::span<const MixedSegment> segments)
@@ -157,10 +159,10 @@ void AndersonMixing::remember(std::span<const MixedSegment> segments)
     for_each_in_segments(segments, norm_segments, [&](double v, std::size_t i) { x_[i] = v; });
 }
 
-void AndersonMixing::mix(std::span<const MixedSegment> segments)
+bool AndersonMixing::mix(std::span<const MixedSegment> segments)
 {
     if (depth_ == 0) {
-        return;
+        return true;
     }
     const std::size_t norm_segments = measured_segments(segments);
     const std::size_t measured = total_size(segments, norm_segments);
@@ -206,7 +208,7 @@ void AndersonMixing::mix(std::span<const MixedSegment> segments)
     }
     gamma_.clear();
     if (columns_ == 0) {
-        return;
+        return true;
     }
 
     // γ from the normal equations ΔFᵀΔF γ = ΔFᵀ f_k, by a pseudo-inverse that drops the
@@ -239,6 +241,35 @@ void AndersonMixing::mix(std::span<const MixedSegment> segments)
         gamma_.push_back(gamma(static_cast<Eigen::Index>((newest_ - k + depth_) % depth_)));
     }
 
+    // The step's bound (see the header): Σ γ_j ΔG_j over the measured part, weighted like f_k.
+    std::vector<double> step(measured, 0.0);
+    {
+        std::size_t offset = 0;
+        for (std::size_t s = 0; s < norm_segments; ++s) {
+            const double weight = segments[s].weight;
+            for_each_element(segments[s].values.size(), [&](std::size_t i) {
+                double value = 0.0;
+                for (Eigen::Index j = 0; j < n; ++j) {
+                    value += gamma(j) * delta_g_[static_cast<std::size_t>(j)][offset + i];
+                }
+                step[offset + i] = weight * value;
+            });
+            offset += segments[s].values.size();
+        }
+    }
+    const double step_norm = std::sqrt(blocked_dot(step, step));
+    const double residual_norm = std::sqrt(blocked_dot(f_previous_, f_previous_));
+    step_ratio_ = residual_norm > 0.0 ? step_norm / residual_norm
+                  : step_norm > 0.0   ? std::numeric_limits<double>::infinity()
+                                      : 0.0;
+    if (max_step_ratio_ > 0.0 && step_ratio_ > max_step_ratio_) {
+        // Refused: G(x_k) stays, and the differences start again from it (f_previous_ and
+        // g_previous_ hold f_k and G(x_k) already).
+        columns_ = 0;
+        newest_ = -1;
+        return false;
+    }
+
     // x_{k+1} = G(x_k) − Σ γ_j ΔG_j
     std::size_t offset = 0;
     for (const MixedSegment& segment : segments) {
@@ -252,6 +283,7 @@ void AndersonMixing::mix(std::span<const MixedSegment> segments)
         });
         offset += out.size();
     }
+    return true;
 }
 
 } // namespace fddem

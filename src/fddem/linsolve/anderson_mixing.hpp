@@ -36,7 +36,19 @@
 /// answer"). Rounded, the same γ comes out of both runs unless an unrounded γ lies within its
 /// round-off of a rounding boundary; with the same γ, the update is affine in the iterates, so a
 /// difference between the runs is carried by fixed weights instead of moving them.
-
+///
+/// The step may be bounded (a safeguard of the kind Walker & Ni §5 and Henderson & Varadhan, J.
+/// Comput. Graph. Stat. 28 (2019) 834, discuss): the extrapolation x_{k+1} − G(x_k) = −Σ γ_i ΔG_i,
+/// measured like f_k, at most `max_step_ratio` times ‖f_k‖. On a linear iteration that contracts
+/// its slowest mode by ρ, the step to the fixed point is ρ/(1 − ρ) ‖f_k‖ along it, so a bound of
+/// 100 leaves the mixing every mode with ρ ≤ 0.99. A larger step is a secant through residuals
+/// that have stopped shrinking (inexact inner solves leave a floor of noise in G): tiny, nearly
+/// parallel ΔF give γ of 10–100, and the whole carried state (the fluid) is thrown along a
+/// difference the measured part cannot see. Such a step is refused: the segments keep G(x_k), and
+/// the mixing restarts from this iterate (its f_k and G(x_k) are the next differences' base).
+/// Off by default: on the paper's Fig. 3, whose tolerance lies near that floor, a bound of 100
+/// left 67 of 600 steps unconverged where the unbounded mixing converges all (docs/method.md §4,
+/// "The mixing's step bounded").
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -53,10 +65,14 @@ class AndersonMixing {
 public:
     /// The significant bits γ is rounded to (0: not rounded).
     static constexpr int default_weight_bits = 12;
+    /// The largest ‖x_{k+1} − G(x_k)‖ / ‖f_k‖ a mix() may take (see above; 0: not bounded).
+    static constexpr double default_max_step_ratio = 0.0;
 
     /// `depth` = m, the number of differences kept (0: plain fixed-point iteration);
-    /// `weight_bits`: γ rounded to that many significant bits (0: not rounded).
-    explicit AndersonMixing(int depth, int weight_bits = default_weight_bits);
+    /// `weight_bits`: γ rounded to that many significant bits (0: not rounded);
+    /// `max_step_ratio`: the bound on the step (0: none).
+    explicit AndersonMixing(int depth, int weight_bits = default_weight_bits,
+                            double max_step_ratio = default_max_step_ratio);
 
     /// Forgets the history: the next remember()/mix() pair starts afresh (a new time step).
     void reset() noexcept;
@@ -65,16 +81,21 @@ public:
     void remember(std::span<const MixedSegment> segments);
 
     /// The segments hold G(x_k) of the x_k last remembered; overwrites them with x_{k+1}. The
-    /// first call after reset() leaves them as they are.
-    void mix(std::span<const MixedSegment> segments);
+    /// first call after reset() leaves them as they are, and so does a refused step. Returns
+    /// false for a refused step (the mixing then restarts from this iterate), true otherwise.
+    bool mix(std::span<const MixedSegment> segments);
 
     [[nodiscard]] int depth() const noexcept { return depth_; }
     /// The weights γ of the last mix() (newest difference first), for tests and diagnostics.
     [[nodiscard]] const std::vector<double>& last_weights() const noexcept { return gamma_; }
+    /// ‖x_{k+1} − G(x_k)‖ / ‖f_k‖ of the last mix() that had weights (also of a refused one).
+    [[nodiscard]] double last_step_ratio() const noexcept { return step_ratio_; }
 
 private:
     int depth_;
     int weight_bits_;
+    double max_step_ratio_;
+    double step_ratio_ = 0.0;
     std::vector<double> x_;          ///< the measured part of x_k, weighted
     std::vector<double> f_previous_; ///< f_{k−1} (measured part, weighted)
     std::vector<double> g_previous_; ///< G(x_{k−1}) (all segments)

@@ -115,6 +115,8 @@ struct SimpleConfig {
     int acceleration_depth = 2; ///< Anderson mixing depth of a step's outer iterations (0: off)
     /// the mixing's weights rounded to this many significant bits (0: not rounded)
     int acceleration_weight_bits = AndersonMixing::default_weight_bits;
+    /// the mixing's step at most this many times the iteration's residual (0: not bounded)
+    double acceleration_max_step = AndersonMixing::default_max_step_ratio;
     int momentum_sweeps = 4; ///< Gauss–Seidel sweeps per V-cycle (or in all, without cycles)
     int momentum_cycles = 1; ///< multigrid V-cycles per outer iteration (0: sweeps alone)
     MomentumSolver momentum_solver = MomentumSolver::automatic;

@@ -75,7 +75,8 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
           grid, bc.is_periodic,
           PoissonSettings{config.simple.pressure_solver, config.simple.linear_tolerance,
                           config.simple.linear_max_iterations, config.simple.fft_planning})),
-      mixing_(config.simple.acceleration_depth, config.simple.acceleration_weight_bits)
+      mixing_(config.simple.acceleration_depth, config.simple.acceleration_weight_bits,
+              config.simple.acceleration_max_step)
 {
     if (is_lubrication_implicit_ && is_simultaneous_ && grid.communicator().size() > 1) {
         // The owners of a split grid's simultaneous sweep each solve their own bodies' eqs.
@@ -437,16 +438,25 @@ void OuterIterations<Dim>::couple_bodies(int k, double velocity_scale, const Ste
                                   : body.coupling.forcing_change;
         report.body_change = std::max(report.body_change, change / scale);
     }
-    if (is_mixed_iteration(k)) {
+    if (is_mixed_iteration(k) && report.body_change < tolerance_) {
+        // G(x_k) has passed the step's test on the bodies: it is what the step keeps, not an
+        // extrapolation from it that no iteration has evaluated. (Mixed here, a converged step
+        // ended on x_{k+1}, up to 0.06 U away from G(x_k) when γ was large: the lone disk's
+        // blow-up and Fig. 3's run-away at D/8, docs/method.md §4, "The mixing's step
+        // bounded".) Should the step go on, the mixing starts afresh from G(x_k).
+        mixing_.reset();
+    } else if (is_mixed_iteration(k)) {
         // Paper deviation (docs/method.md §4): this iteration's output G(x_k) is replaced by
         // Anderson's combination x_{k+1} of the last outputs; then what derives from the mixed
-        // values is restored: λ* = λ (eq. (16) is done) and p's ghosts (u's follow below).
+        // values is restored: λ* = λ (eq. (16) is done) and p's ghosts (u's follow below). A
+        // step out of bounds (AndersonMixing::mix) is refused, and G(x_k) stays as it is.
         collect_iterate(state, bodies);
-        mixing_.mix(iterate_);
-        for (Particle<Dim>& body : bodies) {
-            body.coupling.lambda_star = body.coupling.lambda;
+        if (mixing_.mix(iterate_)) {
+            for (Particle<Dim>& body : bodies) {
+                body.coupling.lambda_star = body.coupling.lambda;
+            }
+            fill_cell_ghosts(grid_, bc_, state.p);
         }
-        fill_cell_ghosts(grid_, bc_, state.p);
     }
     spread_body_force(bodies, in.uniform_force, state); // the next iteration's ρf D(λ*)
     fill_velocity_ghosts(grid_, bc_, state.u);

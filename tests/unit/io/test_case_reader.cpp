@@ -503,6 +503,13 @@ std::vector<BadCase> bad_cases()
          19,
          "simple.acceleration_weight_bits",
          "out of range"},
+        {"negative_acceleration_step",
+         v + "[simple]\nacceleration_max_step = -1.0\n",
+         {},
+         f,
+         19,
+         "simple.acceleration_max_step",
+         "out of range"},
         {"dt_longer_than_end",
          replace(v, "dt = 0.01", "dt = 2.0"),
          {},
@@ -1318,6 +1325,7 @@ pressure_relaxation = 0.6
 pressure_update = "standard"
 acceleration_depth = 3
 acceleration_weight_bits = 10
+acceleration_max_step = 30
 momentum_sweeps = 6
 momentum_cycles = 2
 momentum_solver = "gauss_seidel"
@@ -1385,6 +1393,7 @@ scheme = "bdf2"
     EXPECT_EQ(simple.pressure_update, PressureUpdate::standard);
     EXPECT_EQ(simple.acceleration_depth, 3);
     EXPECT_EQ(simple.acceleration_weight_bits, 10);
+    EXPECT_EQ(simple.acceleration_max_step, 30.0);
     EXPECT_EQ(simple.momentum_sweeps, 6);
     EXPECT_EQ(simple.momentum_cycles, 2);
     EXPECT_EQ(simple.momentum_solver, MomentumSolver::gauss_seidel);

@@ -53,9 +53,10 @@ struct LinearMap {
 /// x after `iterations` steps of x ← G(x) from x = 0, mixed with depth `depth`, γ rounded to
 /// `weight_bits` (0: not rounded).
 Eigen::VectorXd iterate(const LinearMap& map, int depth, int iterations,
-                        int weight_bits = AndersonMixing::default_weight_bits, int measured = -1)
+                        int weight_bits = AndersonMixing::default_weight_bits, int measured = -1,
+                        double max_step_ratio = AndersonMixing::default_max_step_ratio)
 {
-    AndersonMixing mixing(depth, weight_bits);
+    AndersonMixing mixing(depth, weight_bits, max_step_ratio);
     Eigen::VectorXd x = Eigen::VectorXd::Zero(map.b.size());
     const auto n = static_cast<std::size_t>(x.size());
     const std::size_t m = measured < 0 ? n : static_cast<std::size_t>(measured);
@@ -164,6 +165,56 @@ TEST(AndersonMixing, DepthOneAcceleratesASingleSlowMode)
     const double plain = error_after(map, 0, 15);
     const double mixed = error_after(map, 1, 15);
     EXPECT_LT(mixed, 1e-3 * plain);
+}
+
+TEST(AndersonMixing, TakesTheStepThatRemovesAModeContractingByUpTo099)
+{
+    // One mode contracting by ρ and fast ones: the step to the fixed point along it is
+    // ρ/(1 − ρ) ‖f‖ (9 at ρ = 0.9, 49 at 0.98), inside a bound of 100, so the bounded mixing is
+    // the unbounded one (and a bound of 5 refuses the steps).
+    for (const double slow : {0.9, 0.98}) {
+        const LinearMap map(30, {slow, 0.2, 0.1}, 17);
+        const int bits = AndersonMixing::default_weight_bits;
+        const Eigen::VectorXd bounded = iterate(map, 2, 12, bits, -1, 100.0);
+        const Eigen::VectorXd free = iterate(map, 2, 12, bits, -1, 0.0);
+        const Eigen::VectorXd tight = iterate(map, 2, 12, bits, -1, 5.0);
+        EXPECT_GT((tight - free).norm(), 1e-3 * map.solution.norm()) << slow;
+        EXPECT_EQ((bounded - free).norm(), 0.0) << slow;
+        EXPECT_LT((bounded - map.solution).norm(), 1e-6 * map.solution.norm()) << slow;
+    }
+}
+
+TEST(AndersonMixing, RefusesAStepFarBeyondTheResidualAndRestartsFromTheOutput)
+{
+    // A residual that has stopped shrinking: G(x) = x + f with f alternating between two nearly
+    // equal vectors (the noise floor of an inexact inner solve). ΔF is tiny, so γ is huge and
+    // the unbounded step throws x a hundred thousand residuals away; the bounded mixing refuses
+    // it, keeps G(x_k), and reports the ratio it refused.
+    const std::size_t n = 4;
+    const auto size = static_cast<Eigen::Index>(n);
+    const Eigen::VectorXd f1 = Eigen::VectorXd::Constant(size, 1e-6);
+    const Eigen::VectorXd f2 = f1 + 1e-11 * Eigen::VectorXd::Unit(size, 0);
+    for (const double bound : {100.0, 0.0}) {
+        AndersonMixing mixing(1, 0, bound);
+        Eigen::VectorXd x = Eigen::VectorXd::Ones(n);
+        bool last_mixed = true;
+        Eigen::VectorXd output;
+        for (int k = 0; k < 3; ++k) {
+            const std::vector<MixedSegment> segments{{{x.data(), n}, 1.0}};
+            mixing.remember(segments);
+            x += (k % 2 == 0) ? f1 : f2;
+            output = x;
+            last_mixed = mixing.mix(segments);
+        }
+        if (bound > 0.0) {
+            EXPECT_FALSE(last_mixed);
+            EXPECT_GT(mixing.last_step_ratio(), bound);
+            EXPECT_EQ((x - output).norm(), 0.0); // G(x_k) kept
+        } else {
+            EXPECT_TRUE(last_mixed);
+            EXPECT_GT((x - output).norm(), 1e3 * f1.norm()); // the step it would have taken
+        }
+    }
 }
 
 TEST(AndersonMixing, DepthZeroIsThePlainIteration)
