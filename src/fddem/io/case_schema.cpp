@@ -401,8 +401,9 @@ std::vector<KeySpec> case_schema()
     s.push_back(bound(
         ranged(key("simple", "acceleration_max_step", T::real, "", "0",
                    "The largest step the Anderson acceleration may take beyond an outer "
-                   "iteration's output, as a multiple of that iteration's change of the bodies' "
-                   "velocities; a larger one is refused and the mixing restarts (0: not "
+                   "iteration's output, as a multiple of that iteration's residual (the 2-norm "
+                   "over all bodies of the change of U and ωR); a larger one is refused and the "
+                   "mixing restarts (0: not "
                    "bounded; 100 still accelerates modes that contract by up to 0.99 an "
                    "iteration; docs/method.md §4, \"The mixing's step bounded\")."),
                0.0, 1e6, false, false),

@@ -176,15 +176,15 @@ TEST(AndersonMixing, TakesTheStepThatRemovesAModeContractingByUpTo099)
         const LinearMap map(30, {slow, 0.2, 0.1}, 17);
         const int bits = AndersonMixing::default_weight_bits;
         const Eigen::VectorXd bounded = iterate(map, 2, 12, bits, -1, 100.0);
-        const Eigen::VectorXd free = iterate(map, 2, 12, bits, -1, 0.0);
+        const Eigen::VectorXd unbounded = iterate(map, 2, 12, bits, -1, 0.0);
         const Eigen::VectorXd tight = iterate(map, 2, 12, bits, -1, 5.0);
-        EXPECT_GT((tight - free).norm(), 1e-3 * map.solution.norm()) << slow;
-        EXPECT_EQ((bounded - free).norm(), 0.0) << slow;
+        EXPECT_GT((tight - unbounded).norm(), 1e-3 * map.solution.norm()) << slow;
+        EXPECT_EQ((bounded - unbounded).norm(), 0.0) << slow;
         EXPECT_LT((bounded - map.solution).norm(), 1e-6 * map.solution.norm()) << slow;
     }
 }
 
-TEST(AndersonMixing, RefusesAStepFarBeyondTheResidualAndRestartsFromTheOutput)
+TEST(AndersonMixing, RefusesAStepFarBeyondTheResidualAndKeepsTheOutput)
 {
     // A residual that has stopped shrinking: G(x) = x + f with f alternating between two nearly
     // equal vectors (the noise floor of an inexact inner solve). ΔF is tiny, so γ is huge and
