@@ -394,6 +394,40 @@ class TenCate(unittest.TestCase):
                                gaps[0], delta=1e-12)
         self.assertTrue(np.isnan(ten_cate.deceleration_gaps(gap, np.full_like(gap, -1.0))[0]))
 
+    def test_two_digitised_e3_speeds_are_faster_than_a_release_from_rest_allows(self):
+        # a_max = (ρs − ρf) g/(ρs + ρf/2): E3 (ρf 962) 158 · 9.81/1601 = 0.96809 m/s². Fig. 5b's
+        # first E3 points, 0.0091 m/s at 0.005 s and 0.0168 m/s at 0.0165 s, exceed a_max t (0.0048,
+        # 0.0160); no other case has such a point.
+        self.assertAlmostEqual(ten_cate.release_acceleration_bound("E3"), 158.0 * 9.81 / 1601.0, delta=1e-12)
+        directory = ten_cate.reference_directory()
+        above = ten_cate.reference_points_above_release_bound(directory, "E3")
+        self.assertEqual(len(above), 2)
+        self.assertAlmostEqual(above[0, 0], 0.005, delta=1e-3)
+        self.assertAlmostEqual(-above[0, 1], 0.0091, delta=1e-4)
+        for case in ("E1", "E2", "E4"):
+            self.assertEqual(len(ten_cate.reference_points_above_release_bound(directory, case)), 0, case)
+        # compare() leaves them out of w_rms_within_bound only: a run on the digitised curve,
+        # held to the bound where the curve exceeds it, misses those two points alone.
+        _, ref_w = ten_cate.load_curves(directory, "E3")
+        with tempfile.TemporaryDirectory() as run:
+            t = np.linspace(0.0, 1.6, 3201)
+            curve = np.interp(t, np.concatenate([[0.0], ref_w[:, 0]]),
+                              np.concatenate([[0.0], ref_w[:, 1]]))  # from rest at t = 0
+            w = -np.minimum(-curve, ten_cate.release_acceleration_bound("E3") * t)
+            z = 0.1275 + np.concatenate([[0.0], np.cumsum(0.5 * (w[1:] + w[:-1]) * np.diff(t))])
+            with open(os.path.join(run, "particles.csv"), "w") as f:
+                f.write("time,id,x,y,z,u,v,w\n")
+                for row in zip(t, z, w):
+                    f.write("{},0,0.05,0.05,{},0,0,{}\n".format(*row))
+            r = ten_cate.compare(run, directory, "E3")
+        self.assertEqual(r["points_above_bound"], 2)
+        # Left out: the held run's 0.0049 against 0.0091 m/s (4.8 % of u_max) and 0.0160 against
+        # 0.0168; kept: 0.4 % from two points digitised at one time (0.146 s: 0.0521, 0.0498).
+        print(f"E3 on its own curve held to the bound: w_rms {r['w_rms']:.4f}, "
+              f"within the bound {r['w_rms_within_bound']:.4f}")
+        self.assertGreater(r["w_rms"], 0.009)
+        self.assertLess(r["w_rms_within_bound"], 0.005)
+
     def test_the_digitised_figures_disagree_with_each_other(self):
         # Measured by hand from the files (the slope of Fig. 5a between gap 2 d and 6 d, the
         # trapezoidal integral of Fig. 5b): E1's Fig. 5b peaks 2.9 % above Table 2 while Fig. 5a
