@@ -42,7 +42,7 @@
 /// measured like f_k, at most `max_step_ratio` times ‖f_k‖. On a linear iteration that contracts
 /// its slowest mode by ρ, the step to the fixed point is ρ/(1 − ρ) ‖f_k‖ along it, so a bound of
 /// 100 leaves the mixing every mode with ρ ≤ 0.99. A larger step is a secant through residuals
-/// that have stopped shrinking (inexact inner solves leave a floor of noise in G): tiny, nearly
+/// that have stopped shrinking (a floor below which G's residual wanders): tiny, nearly
 /// parallel ΔF give γ of 10–100, and the whole carried state (the fluid) is thrown along a
 /// difference the measured part cannot see. Such a step is refused: the segments keep G(x_k), and
 /// the mixing restarts from this iterate (its f_k and G(x_k) are the next differences' base).
