@@ -303,8 +303,10 @@ std::vector<KeySpec> case_schema()
                                    "With time.max_courant: a step whose Courant number after "
                                    "it (solver.csv) is above this is retried at half its Δt "
                                    "(time.max_retries): the flow sped up within the step "
-                                   "beyond what the limit allowed for. None: not a reason to "
-                                   "retry.")),
+                                   "beyond what the limit allowed for. None: 4 × "
+                                   "time.max_courant, which only a failed step reaches (since "
+                                   "2026-11-30; before, no limit). time.max_retries = 0 turns "
+                                   "every retry off.")),
                       &CaseConfig::time, &TimeConfig::retry_courant));
     s.push_back(bound(key("time", "steady", T::boolean, none, "false",
                           "Pseudo-time march to a steady state (needs time.steady_tolerance, no "

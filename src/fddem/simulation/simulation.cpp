@@ -36,7 +36,8 @@ Simulation<Dim>::Simulation(const CaseConfig& config, const Communicator& ranks)
              contacts_ && contacts_->is_paper_coupling),
       step_control_{config.time.dt, config.time.max_courant, config.time.is_steady, config.time.end,
                     config.time.is_steady ? 2.0 : 1.2},
-      retry_{config.time.max_retries, config.time.retry_mass_residual, config.time.retry_courant}
+      retry_{config.time.max_retries, config.time.retry_mass_residual,
+             retry_courant_limit(config.time.retry_courant, config.time.max_courant)}
 {
     clock_.dt = config.time.dt;
     times_.communication_clock = grid_.communicator().seconds_counter();

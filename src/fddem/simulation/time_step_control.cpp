@@ -38,6 +38,15 @@ std::string retry_reason(const RetrySettings& retry, const StepReport& report)
     return {};
 }
 
+std::optional<double> retry_courant_limit(std::optional<double> retry_courant,
+                                          std::optional<double> max_courant) noexcept
+{
+    if (retry_courant || !max_courant) {
+        return retry_courant;
+    }
+    return default_retry_courant_factor * *max_courant;
+}
+
 bool may_retry(const TimeStepSettings& settings, const RetrySettings& retry, int retries, double dt,
                double min_dt) noexcept
 {

@@ -51,6 +51,23 @@ TEST(TimeStepControl, AStepIsRetriedWhenItEndsAboveALimit)
     EXPECT_NE(retry_reason(RetrySettings{3, 0.5, std::nullopt}, report), "");
 }
 
+TEST(TimeStepControl, WithoutItsKeyAStepIsRetriedAboveFourTimesTheCourantLimit)
+{
+    // The case's value wins; without one, 4 × time.max_courant; without the limit, none.
+    EXPECT_EQ(retry_courant_limit(0.9, 0.3), 0.9);
+    EXPECT_EQ(retry_courant_limit(std::nullopt, 0.3), 1.2);
+    EXPECT_EQ(retry_courant_limit(std::nullopt, std::nullopt), std::nullopt);
+    EXPECT_EQ(retry_courant_limit(2.0, std::nullopt), 2.0);
+    // Gondret St 27 at Δt 1e-4 s (C = 0.3): the step that ended at 8.4 is retried, the
+    // largest a healthy run of it reached (0.371) is not.
+    StepReport report;
+    report.courant = 8.4;
+    const RetrySettings defaulted{3, std::nullopt, retry_courant_limit(std::nullopt, 0.3)};
+    EXPECT_EQ(retry_reason(defaulted, report), "Courant number 8.4 above time.retry_courant = 1.2");
+    report.courant = 0.371;
+    EXPECT_EQ(retry_reason(defaulted, report), "");
+}
+
 TEST(TimeStepControl, ARetryNeedsTheAdaptiveStepRetriesLeftAndRoomAboveTheShortestStep)
 {
     const TimeStepSettings adaptive{0.1, 0.5, false, 1.0, 1.2};
