@@ -138,9 +138,11 @@ TEST(AdaptiveTimeStep, ARunThatBreaksDownAtTheFixedStepRunsWithTheLimit)
     Simulation<2> sim(limited);
     double courant = 0.0;
     double largest_move = 0.0;
+    int retried = 0;
     Vec<2> previous = sim.bodies().front().centre;
     for (StepReport report = sim.advance(); !sim.is_finished(report); report = sim.advance()) {
         courant = std::max(courant, report.courant);
+        retried += report.retries > 0 ? 1 : 0;
         largest_move = std::max(largest_move, (sim.bodies().front().centre - previous).norm());
         previous = sim.bodies().front().centre;
     }
@@ -153,6 +155,25 @@ TEST(AdaptiveTimeStep, ARunThatBreaksDownAtTheFixedStepRunsWithTheLimit)
     // step, and the fluid in and around the disk speeds up with it within the step, up to
     // about twice the start's (measured: 1.17 for the limit 0.5; at the fixed step: 14 to 804).
     EXPECT_LT(courant, 1.5);
+    // By the controller alone: no step reached the default retry limit, 4 × 0.5.
+    EXPECT_EQ(retried, 0);
+}
+
+TEST(AdaptiveTimeStep, WithoutItsKeyTheCourantRetryLimitIsFourTimesTheCourantLimit)
+{
+    // The simulation takes the default of retry_courant_limit (TimeStepControl.*), and the
+    // case's own value over it; without time.max_courant nothing is retried. (No step of the
+    // heavy disk reaches 4 × its limit: the controller binds the first step for any limit
+    // below 6.2, and above it the first step's 14.3 stays under 4 × the limit.)
+    const Simulation<2> defaulted(
+        read_case_string(heavy_disk, "test:heavy disk", {"time.max_courant=0.3"}));
+    ASSERT_TRUE(defaulted.retry_settings().courant.has_value());
+    EXPECT_EQ(*defaulted.retry_settings().courant, 1.2);
+    const Simulation<2> given(read_case_string(heavy_disk, "test:heavy disk",
+                                               {"time.max_courant=0.3", "time.retry_courant=5"}));
+    EXPECT_EQ(given.retry_settings().courant, 5.0);
+    const Simulation<2> fixed(read_case_string(heavy_disk, "test:heavy disk"));
+    EXPECT_FALSE(fixed.retry_settings().courant.has_value());
 }
 
 /// The largest difference between two simulations' fluid velocities [m/s].

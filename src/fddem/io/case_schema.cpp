@@ -303,10 +303,11 @@ std::vector<KeySpec> case_schema()
                                    "With time.max_courant: a step whose Courant number after "
                                    "it (solver.csv) is above this is retried at half its Δt "
                                    "(time.max_retries): the flow sped up within the step "
-                                   "beyond what the limit allowed for. None: 4 × "
-                                   "time.max_courant, which only a failed step reaches (since "
-                                   "2026-11-30; before, no limit). time.max_retries = 0 turns "
-                                   "every retry off.")),
+                                   "beyond what the limit allowed for (none: 4 × "
+                                   "time.max_courant, beyond what the runs measured reached "
+                                   "without failing; docs/method.md §1, Retries). A very large "
+                                   "value turns this reason alone off; time.max_retries = 0 "
+                                   "turns every retry off.")),
                       &CaseConfig::time, &TimeConfig::retry_courant));
     s.push_back(bound(key("time", "steady", T::boolean, none, "false",
                           "Pseudo-time march to a steady state (needs time.steady_tolerance, no "

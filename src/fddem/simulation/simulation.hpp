@@ -59,6 +59,9 @@ public:
     StepReport advance();
     /// Why the last step was retried (the last failure, in words), empty if it was not.
     [[nodiscard]] const std::string& last_retry_note() const noexcept { return retry_note_; }
+    /// When a step is retried: the case's time.max_retries and time.retry_* keys, with the
+    /// Courant limit's default (retry_courant_limit) filled in.
+    [[nodiscard]] const RetrySettings& retry_settings() const noexcept { return retry_; }
 
     /// The one place Δt [s] is set: adopts it for the next step, with everything derived from
     /// it (the momentum multigrid's cycles, the DEM's sub-step count N_i; a reused momentum

@@ -76,11 +76,12 @@ struct RetrySettings {
 
 /// The Courant number after it above which a finished step is retried when the case names no
 /// time.retry_courant: this many times time.max_courant. The controller predicts the step from
-/// its start, so the flow may end it faster than asked: measured up to 1.24 times the limit in
-/// the Gondret rebounds at C = 0.3, 2.34 times on the heavy disk's first step at C = 0.5
-/// (AdaptiveTimeStep.*). A step ending four times beyond it has failed, whatever the cause: the
-/// Gondret St 27 sphere at Δt 1e-4 s ended one at 28 times (8.4), two steps after its outer
-/// iterations had stopped converging, 3 d above the wall (docs/method.md §1, "The time step's
+/// its start, so the flow may end it faster than asked: up to 2.34 times the limit in a run
+/// that did not fail (the heavy disk of AdaptiveTimeStep.*, C = 0.5). A step ending four times
+/// beyond it has failed, whatever the cause: the Gondret St 27 sphere at Δt 1e-4 s ended one
+/// at 28 times (8.4), 3 d above the wall, its outer iterations unconverged in that step and the
+/// one before. Not every failure gets that far: the step before it ended at 1.69 times, and
+/// St 152's stall in contact (since mended) at 1.9 times (docs/method.md §1, "The time step's
 /// length", Retries).
 inline constexpr double default_retry_courant_factor = 4.0;
 
