@@ -66,6 +66,16 @@ void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
     summary.set("total_outer_iterations", record.total_outer_iterations);
     summary.set("unconverged_steps", record.unconverged_steps);
     summary.set("max_courant", record.max_courant);
+    if (config.time.max_courant) { // the limits a step is retried at (time_step_control.hpp)
+        const RetrySettings& retry = sim.retry_settings();
+        summary.set("max_retries", static_cast<long>(retry.max_retries));
+        if (retry.courant) {
+            summary.set("retry_courant", *retry.courant);
+        }
+        if (retry.mass_residual) {
+            summary.set("retry_mass_residual", *retry.mass_residual);
+        }
+    }
     summary.set("last_mass_residual", last.mass_residual);
     summary.set("last_momentum_residual", last.momentum_residual);
     summary.set("last_rate_of_change", last.rate_of_change);

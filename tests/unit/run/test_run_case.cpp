@@ -177,6 +177,8 @@ TEST(RunCase, CavityRunDirectoryHoldsTheDocumentedFilesAndTheLidDrivenFlow)
     const std::string summary = file_contents(run / "summary.json");
     EXPECT_NE(summary.find("\"status\" : \"completed\""), std::string::npos) << summary;
     EXPECT_NE(summary.find("\"steps\" : 20,"), std::string::npos) << summary;
+    // No time.max_courant: no retries, so none of their limits.
+    EXPECT_EQ(summary.find("retry"), std::string::npos) << summary;
     // output.field_interval = 0: the initial and the final frame.
     EXPECT_TRUE(fs::exists(run / "fields/fields_000000.vtr"));
     EXPECT_TRUE(fs::exists(run / "fields/fields_000001.vtr"));
@@ -202,6 +204,23 @@ TEST(RunCase, CavityRunDirectoryHoldsTheDocumentedFilesAndTheLidDrivenFlow)
     }
     EXPECT_GT(magnitude, 0.05);
     EXPECT_LT(std::abs(flux), 1e-12 * magnitude) << "flux " << flux << ", h Σ |u| " << magnitude;
+}
+
+TEST(RunCase, SummaryRecordsTheRetryLimitsTheRunApplied)
+{
+    std::string text = cavity_case;
+    const std::string fixed_step = "dt = 0.05\n";
+    text.replace(text.find(fixed_step), fixed_step.size(),
+                 "dt = 0.05\nmax_courant = 0.5\nmax_retries = 3\nretry_mass_residual = 0.25\n");
+    const fs::path run = test::fresh_test_directory("fddem_run_case_") / "retry";
+    TestMonitor monitor;
+    ASSERT_EQ(run_case(read_case_string(text, "test:retry"), run, monitor).outcome,
+              RunResult::Outcome::completed);
+    const std::string summary = file_contents(run / "summary.json");
+    // time.retry_courant not given: 4 × time.max_courant (retry_courant_limit).
+    EXPECT_NE(summary.find("\"retry_courant\" : 2.0,"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("\"retry_mass_residual\" : 0.25,"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("\"max_retries\" : 3,"), std::string::npos) << summary;
 }
 
 TEST(RunCase, SettlingDiskRowsFollowTheBodyDownNoFasterThanFreeFall)
