@@ -69,6 +69,7 @@ void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
     if (config.time.max_courant) { // the limits a step is retried at (time_step_control.hpp)
         const RetrySettings& retry = sim.retry_settings();
         summary.set("max_retries", static_cast<long>(retry.max_retries));
+        summary.set("min_dt", sim.shortest_step());
         if (retry.courant) {
             summary.set("retry_courant", *retry.courant);
         }

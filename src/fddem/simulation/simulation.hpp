@@ -62,6 +62,9 @@ public:
     /// When a step is retried: the case's time.max_retries and time.retry_* keys, with the
     /// Courant limit's default (retry_courant_limit) filled in.
     [[nodiscard]] const RetrySettings& retry_settings() const noexcept { return retry_; }
+    /// time.min_dt, or its default share of time.dt [s]: with time.max_courant, the adaptive
+    /// Δt below which the run stops.
+    [[nodiscard]] double shortest_step() const noexcept;
 
     /// The one place Δt [s] is set: adopts it for the next step, with everything derived from
     /// it (the momentum multigrid's cycles, the DEM's sub-step count N_i; a reused momentum
@@ -260,8 +263,6 @@ private:
     void roll_back_step();
     /// Whether a step of `dt` [s] that failed after `retries` retries is taken again.
     [[nodiscard]] bool may_retry_step(int retries, double dt) const noexcept;
-    /// time.min_dt, or its default share of time.dt [s].
-    [[nodiscard]] double shortest_step() const noexcept;
 
     CaseConfig config_;
     MacGrid<Dim> grid_;

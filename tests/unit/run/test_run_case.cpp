@@ -179,6 +179,7 @@ TEST(RunCase, CavityRunDirectoryHoldsTheDocumentedFilesAndTheLidDrivenFlow)
     EXPECT_NE(summary.find("\"steps\" : 20,"), std::string::npos) << summary;
     // No time.max_courant: no retries, so none of their limits.
     EXPECT_EQ(summary.find("retry"), std::string::npos) << summary;
+    EXPECT_EQ(summary.find("min_dt"), std::string::npos) << summary;
     // output.field_interval = 0: the initial and the final frame.
     EXPECT_TRUE(fs::exists(run / "fields/fields_000000.vtr"));
     EXPECT_TRUE(fs::exists(run / "fields/fields_000001.vtr"));
@@ -221,6 +222,11 @@ TEST(RunCase, SummaryRecordsTheRetryLimitsTheRunApplied)
     EXPECT_NE(summary.find("\"retry_courant\" : 2.0,"), std::string::npos) << summary;
     EXPECT_NE(summary.find("\"retry_mass_residual\" : 0.25,"), std::string::npos) << summary;
     EXPECT_NE(summary.find("\"max_retries\" : 3,"), std::string::npos) << summary;
+    // time.min_dt not given: 1e-6 time.dt (time_step_control.hpp).
+    const std::string min_dt_key = "\"min_dt\" : ";
+    const std::size_t at = summary.find(min_dt_key);
+    ASSERT_NE(at, std::string::npos) << summary;
+    EXPECT_DOUBLE_EQ(std::stod(summary.substr(at + min_dt_key.size())), 1e-6 * 0.05);
 }
 
 TEST(RunCase, SettlingDiskRowsFollowTheBodyDownNoFasterThanFreeFall)
