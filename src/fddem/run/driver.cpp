@@ -16,6 +16,7 @@
 #include "fddem/run/output_schedule.hpp"
 #include "fddem/run/run_messages.hpp"
 #include "fddem/run/run_summary.hpp"
+#include "fddem/run/wall_proximity.hpp"
 #include "fddem/simulation/simulation_setup.hpp"
 
 #include <fmt/format.h>
@@ -106,6 +107,7 @@ RunResult Driver<Dim>::step_to_end()
                 outputs_.append_step(clock, report, record_.total_outer_iterations, wall_seconds());
             }
             watch_step(report, clock, config_, record_, monitor_);
+            warn_of_wall_ring();
             if (report.retries > 0 && ++retried_steps_ <= max_reported_retries) {
                 monitor_.message(fmt::format(
                     "warning: step {} (t = {:g} s) taken again {} time(s), kept at Δt = {:.3g} s; "
@@ -290,6 +292,21 @@ void Driver<Dim>::write_checkpoint_now(std::size_t n_frames)
     fs::create_directories(checkpoint_directory(directory_));
     write_checkpoint(last_checkpoint_, state, record_);
     prune_checkpoints(directory_, config_.checkpoint.keep);
+}
+
+template <int Dim>
+void Driver<Dim>::warn_of_wall_ring()
+{
+    if (has_warned_wall_ring_) {
+        return;
+    }
+    const MacGrid<Dim>& grid = sim_.grid();
+    if (const auto text =
+            wall_ring_warning<Dim>(sim_.bodies(), grid.domain(), sim_.boundary_conditions(),
+                                   grid.spacing(), config_.coupling, sim_.clock().time)) {
+        has_warned_wall_ring_ = true;
+        monitor_.message(*text);
+    }
 }
 
 template <int Dim>

@@ -71,6 +71,9 @@ private:
     /// are recorded as the run's (the end-of-run frame outside output.field_interval is not).
     void write_checkpoint_now(std::size_t n_frames);
     void write_summary(const std::string& status) const;
+    /// Once per process: a warning when a body with a shallow retracted marker ring comes within
+    /// half a cell of a wall without coupling.markers_off_at_walls (wall_proximity.hpp).
+    void warn_of_wall_ring();
     /// The last message of a completed run.
     [[nodiscard]] std::string completion_message() const;
     /// time.steady: whether the march reached the steady state and solved its last step.
@@ -100,6 +103,8 @@ private:
     std::chrono::steady_clock::time_point loop_start_;
     /// Retried steps this process has taken (time.max_retries); the first few are reported.
     long retried_steps_ = 0;
+    /// Whether this process warned of a shallow marker ring beside a wall (warn_of_wall_ring).
+    bool has_warned_wall_ring_ = false;
     static constexpr long max_reported_retries = 10;
 };
 
