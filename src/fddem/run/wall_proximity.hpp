@@ -23,7 +23,10 @@ inline constexpr double shallow_ring_depth = 0.6;
 
 /// Closer to a wall than this [cells]: at half a cell the retracted sphere's force doubles from
 /// Δt = 2e-4 to 5e-5 s (Gondret St 27's), and the 2D disk's drifts from 0.75 h on (254, 486,
-/// 1198 μU at the squeeze case's three Δt): the warning comes late rather than early.
+/// 1198 μU at the squeeze case's three Δt): the warning comes late rather than early. Both
+/// were measured at Re 30 with νΔt/h² = 0.009–0.07; in Stokes flow (the sphere–wall approach,
+/// νΔt/h² = 50, within 4.5 % of Brenner down to 0.4 h) the drift was not measured, and the
+/// warning there is a caution, not a measurement.
 inline constexpr double near_wall_gap = 0.5;
 
 /// The gap between a ball of `radius` at `centre` and the nearest wall or inflow side of the box
