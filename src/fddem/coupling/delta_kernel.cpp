@@ -18,4 +18,19 @@ AnyKernel make_kernel(KernelKind kind)
     return HatKernel{};
 }
 
+double support_radius(KernelKind kind) noexcept
+{
+    switch (kind) {
+    case KernelKind::roma3:
+        return RomaPeskin3Kernel::support_radius;
+    case KernelKind::peskin4:
+        return Peskin4Kernel::support_radius;
+    case KernelKind::roma3_smoothed:
+        return SmoothedRoma3Kernel::support_radius;
+    case KernelKind::hat:
+        break;
+    }
+    return HatKernel::support_radius;
+}
+
 } // namespace fddem

@@ -15,7 +15,10 @@ concept DeltaKernel = requires(double s)
 {
     {
         K::half_width
-        } -> std::convertible_to<int>; // support: |s| < half_width
+        } -> std::convertible_to<int>; // the stencil: |s| < half_width
+    {
+        K::support_radius
+        } -> std::convertible_to<double>; // where the weight is nonzero: |s| < support_radius
     {
         K::weight(s)
         } -> std::same_as<double>; // 1-D weight, s = r / h
@@ -24,6 +27,7 @@ concept DeltaKernel = requires(double s)
 /// Linear hat d_h(r) = 1 − |r|/h for |r| < h, else 0 (paper §2.2).
 struct HatKernel {
     static constexpr int half_width = 1;
+    static constexpr double support_radius = 1.0;
     [[nodiscard]] static double weight(double s) noexcept
     {
         const double a = std::abs(s);
@@ -33,7 +37,8 @@ struct HatKernel {
 
 /// Roma, Peskin & Berger (1999), J. Comput. Phys. 153, eq. (12): three-point kernel.
 struct RomaPeskin3Kernel {
-    static constexpr int half_width = 2; // support |s| < 1.5
+    static constexpr int half_width = 2;
+    static constexpr double support_radius = 1.5;
     [[nodiscard]] static double weight(double s) noexcept
     {
         const double a = std::abs(s);
@@ -51,6 +56,7 @@ struct RomaPeskin3Kernel {
 /// Peskin (2002), Acta Numerica 11, eq. (6.27): the standard four-point kernel.
 struct Peskin4Kernel {
     static constexpr int half_width = 2;
+    static constexpr double support_radius = 2.0;
     [[nodiscard]] static double weight(double s) noexcept
     {
         const double a = std::abs(s);
@@ -71,6 +77,7 @@ struct Peskin4Kernel {
 /// Support |s| < 2. (Written here from the published formula: no library provides it.)
 struct SmoothedRoma3Kernel {
     static constexpr int half_width = 2;
+    static constexpr double support_radius = 2.0;
     [[nodiscard]] static double weight(double s) noexcept
     {
         const double a = std::abs(s);
@@ -102,5 +109,18 @@ using AnyKernel = std::variant<HatKernel, RomaPeskin3Kernel, Peskin4Kernel, Smoo
 enum class KernelKind { hat, roma3, peskin4, roma3_smoothed };
 
 [[nodiscard]] AnyKernel make_kernel(KernelKind kind);
+
+/// The support radius of the kernel `kind` [cells].
+[[nodiscard]] double support_radius(KernelKind kind) noexcept;
+
+/// How close to a wall [cells] a marker is switched off by coupling.markers_off_at_walls when
+/// coupling.markers_off_reach is not given: the kernel's support radius and half a cell, so that
+/// no marker reads the row of cells beside the wall (whose tangential velocity sits h/2 from it),
+/// the row that drains the fluid squeezed out between a body and the wall (docs/method.md §5,
+/// "The retracted ring beside a wall").
+[[nodiscard]] inline double default_wall_marker_reach(double kernel_support_radius) noexcept
+{
+    return kernel_support_radius + 0.5;
+}
 
 } // namespace fddem

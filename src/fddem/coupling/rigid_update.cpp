@@ -135,20 +135,23 @@ void interpolate_at_markers(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
     }
 }
 
-/// Whether the kernel support of a marker at `x` reaches a wall: closer to a non-periodic side
-/// than the kernel's half width. There the interpolation reads the wall's ghosts, which are odd
-/// images of the fluid beside the wall (fluid/boundary_conditions.cpp): forcing that fluid one
-/// way makes the marker read it the other way, and eq. (15)'s correction then grows the fluid
-/// velocity instead of removing the slip.
-template <int Dim, class Kernel>
-bool reaches_wall(const MacGrid<Dim>& grid, const Vec<Dim>& x)
+/// Whether a marker at `x` is closer than `reach` cells to a non-periodic side. With the
+/// default reach (the kernel's support radius + 1/2) that is every marker whose kernel reads the
+/// row of cells beside the wall: the wall's ghosts, odd images of the fluid beside it
+/// (fluid/boundary_conditions.cpp), which turn eq. (15)'s correction around (docs/method.md §5,
+/// "The stall in contact, diagnosed"), and the tangential velocity h/2 from the wall, which
+/// drains the fluid squeezed out between a body and the wall: with markers holding it to the
+/// body's motion the resolved force below half a cell grows as Δt shrinks, measured (§5, "The
+/// retracted ring beside a wall").
+template <int Dim>
+bool reaches_wall(const MacGrid<Dim>& grid, const Vec<Dim>& x, double reach_cells)
 {
     const PeriodicDomain<Dim> domain = grid.domain();
     for (int d = 0; d < Dim; ++d) {
         if (domain.periodic(d)) {
             continue;
         }
-        const double reach = Kernel::half_width * grid.spacing()[d];
+        const double reach = reach_cells * grid.spacing()[d];
         if (x[d] - domain.origin[d] < reach || domain.origin[d] + domain.length[d] - x[d] < reach) {
             return true;
         }
@@ -156,7 +159,7 @@ bool reaches_wall(const MacGrid<Dim>& grid, const Vec<Dim>& x)
     return false;
 }
 
-/// The markers of one body whose kernel support reaches a wall, with coupling.markers_off_at_walls
+/// The markers of one body close to a wall (reaches_wall), with coupling.markers_off_at_walls
 /// (Kempe & Fröhlich 2012b, as Biegert et al. 2017 report): no force; their fluid moves with the
 /// body in eqs. (13)–(14). Decided from the position alone, so alike on every rank of a split
 /// grid. Sets their I(u) and λ*; returns the flags (empty without the option).
@@ -166,8 +169,11 @@ std::vector<char> silence_wall_markers(Particle<Dim>& body, const MacGrid<Dim>& 
 {
     MarkerCoupling<Dim>& c = body.coupling;
     std::vector<char> is_off(s.is_wall_marker_off ? c.markers.size() : 0, 0);
+    const double reach = s.wall_marker_reach > 0.0
+                             ? s.wall_marker_reach
+                             : default_wall_marker_reach(Kernel::support_radius);
     for (std::size_t l = 0; l < is_off.size(); ++l) {
-        if (reaches_wall<Dim, Kernel>(grid, c.positions[l])) {
+        if (reaches_wall<Dim>(grid, c.positions[l], reach)) {
             is_off[l] = 1;
             c.fluid[l] = body.velocity + cross(body.omega, c.offsets[l]);
             c.lambda_star[l] = Vec<Dim>::Zero();

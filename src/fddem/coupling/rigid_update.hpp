@@ -40,8 +40,8 @@ struct RigidUpdateSettings {
     /// w of core/time_scheme.hpp: the level-n motion of eqs. (13)–(14) is
     /// Ũ^n = U^n + w (U^n − U^{n−1}) (likewise ω); 0 for implicit Euler
     double history_weight = 0.0;
-    /// coupling.markers_off_at_walls: markers whose kernel support reaches a wall of `walls`
-    /// (a non-periodic side) take no part (λ = 0; their u_l in (13)–(14) the body's own motion)
+    /// coupling.markers_off_at_walls: markers closer than wall_marker_reach to a wall (a
+    /// non-periodic side) take no part (λ = 0; their u_l in (13)–(14) the body's own motion)
     bool is_wall_marker_off = false;
     /// coupling.body_sweep = "simultaneous": every body's I(u) from the same u and the
     /// corrections of eq. (16) added together (one sum over ranks and one halo exchange per
@@ -58,6 +58,9 @@ struct RigidUpdateSettings {
     /// inside a free body integrated over the cells it covers (its level-n value set at the
     /// step's start, coupling.inner_fluid_n), not taken from its markers
     bool is_inner_fluid_volume = false;
+    /// With is_wall_marker_off: how close to a wall [cells of that side's axis] a marker is off;
+    /// 0: default_wall_marker_reach of the kernel (its support radius + 1/2)
+    double wall_marker_reach = 0.0;
 };
 
 /// Whether eqs. (13)–(14) give the body's motion in an outer iteration: a free body, unless the

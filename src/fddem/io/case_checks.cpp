@@ -344,6 +344,11 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
                  "take a free body's inner fluid from them: set coupling.inner_fluid = "
                  "\"volume\", or use \"paper\" or \"retracted\"");
     }
+    if (c.coupling.wall_marker_reach.has_value() && !c.coupling.is_wall_marker_off) {
+        doc.fail("coupling.markers_off_reach", doc.node("coupling", "markers_off_reach"),
+                 "coupling.markers_off_at_walls is off, so the reach would be ignored: set "
+                 "coupling.markers_off_at_walls = true, or remove the reach");
+    }
     if (c.coupling.inner_fluid == InnerFluidSource::volume && c.coupling.is_wall_marker_off) {
         doc.fail("coupling.inner_fluid", doc.node("coupling", "inner_fluid"),
                  "\"volume\" integrates the fluid inside a body as it is, so the markers "

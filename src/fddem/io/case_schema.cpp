@@ -539,13 +539,25 @@ std::vector<KeySpec> case_schema()
                           "as the paper (docs/method.md §4)."),
                       &CaseConfig::coupling, &CouplingConfig::is_forcing_before_projection));
     s.push_back(bound(key("coupling", "markers_off_at_walls", T::boolean, none, "false",
-                          "Switch off, for the outer iteration, every marker whose kernel support "
-                          "reaches a wall (closer to it than the kernel's half width): no force, "
-                          "and its fluid velocity taken as the body's in (13)–(14). The kernel "
-                          "reads the wall's odd ghost images there, which turns the forcing's "
-                          "feedback around (docs/method.md §5, the stall in contact). false: every "
-                          "marker acts, as the paper."),
+                          "Switch off, for the outer iteration, every marker closer to a wall "
+                          "than coupling.markers_off_reach: no force, and its fluid velocity "
+                          "taken as the body's in (13)–(14). Such a marker's kernel reads the "
+                          "wall's odd ghost images, which turn the forcing's feedback around "
+                          "(docs/method.md §5, the stall in contact), or the row of cells beside "
+                          "the wall, which drains the fluid squeezed out under a body (§5, the "
+                          "retracted ring beside a wall). false: every marker acts, as the paper."),
                       &CaseConfig::coupling, &CouplingConfig::is_wall_marker_off));
+    s.push_back(
+        bound(ranged(key("coupling", "markers_off_reach", T::real, none, "none",
+                         "With markers_off_at_walls: how close to a wall a marker is switched "
+                         "off, in grid spacings. Default: the kernel's support radius + 0.5 "
+                         "(hat 1.5, roma3 2, peskin4 and roma3_smoothed 2.5), so that no marker "
+                         "reads the row of cells beside the wall; with less the resolved force "
+                         "of a body below half a cell from the wall grows as Δt shrinks (docs/"
+                         "method.md §5, \"The retracted ring beside a wall\"). Before 2026-12-01 "
+                         "it was the kernel's stencil half width (hat 1, the others 2)."),
+                     0.0, 5.0, true, false),
+              &CaseConfig::coupling, &CouplingConfig::wall_marker_reach));
     s.push_back(
         bound(key("coupling", "normalised_forcing", T::boolean, none, "false",
                   "Divide eq. (15)'s correction at each marker by max(1, r), r the row "

@@ -31,8 +31,11 @@ double gap_to_walls(const Vec<Dim>& centre, double radius, const PeriodicDomain<
 
 bool has_shallow_ring_at_walls(const CouplingConfig& coupling) noexcept
 {
+    const double full_reach = default_wall_marker_reach(support_radius(coupling.kernel));
+    const bool is_mended = coupling.is_wall_marker_off &&
+                           coupling.wall_marker_reach.value_or(full_reach) >= full_reach;
     return coupling.markers != MarkerLayout::paper &&
-           coupling.marker_retraction < shallow_ring_depth && !coupling.is_wall_marker_off;
+           coupling.marker_retraction < shallow_ring_depth && !is_mended;
 }
 
 template <int Dim>
@@ -52,7 +55,8 @@ wall_ring_warning(const Particles<Dim>& bodies, const PeriodicDomain<Dim>& domai
                 "markers {:g} cells inside its surface (coupling.marker_retraction): there the "
                 "resolved force grows as Δt shrinks and is not a converged quantity "
                 "(docs/method.md §5, \"The retracted ring beside a wall\"); "
-                "coupling.markers_off_at_walls = true reduces it",
+                "coupling.markers_off_at_walls = true (with the default "
+                "coupling.markers_off_reach) keeps it converged",
                 time, body.id, gap, coupling.marker_retraction);
         }
     }

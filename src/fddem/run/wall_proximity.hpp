@@ -38,7 +38,8 @@ gap_to_walls(const Vec<Dim>& centre, double radius, const PeriodicDomain<Dim>& d
              const BoundaryConditions<Dim>& bc, const Vec<Dim>& spacing) noexcept;
 
 /// Whether the layout puts the outermost ring less than shallow_ring_depth cells deep and the
-/// wall markers stay on (coupling.markers_off_at_walls off). Pure.
+/// wall markers stay on (coupling.markers_off_at_walls off, or its reach below the kernel's
+/// default_wall_marker_reach). Pure.
 [[nodiscard]] bool has_shallow_ring_at_walls(const CouplingConfig& coupling) noexcept;
 
 /// The warning's text at time `time` [s] for the first body closer than near_wall_gap cells to a

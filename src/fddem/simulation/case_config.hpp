@@ -195,9 +195,11 @@ struct CouplingConfig {
     /// Eqs. (15)–(16) between the momentum solve and the pressure correction, so that each
     /// outer iteration ends divergence-free (Uhlmann 2005), not after the correction (the paper)
     bool is_forcing_before_projection = false;
-    /// Markers whose kernel support reaches a wall (closer to it than the kernel's half width)
-    /// take no part in eqs. (13)–(16) (Kempe & Fröhlich 2012b, as Biegert et al. 2017 report)
+    /// Markers closer to a wall than wall_marker_reach take no part in eqs. (13)–(16) (Kempe &
+    /// Fröhlich 2012b, as Biegert et al. 2017 report)
     bool is_wall_marker_off = false;
+    /// coupling.markers_off_reach [cells]; none: default_wall_marker_reach of the kernel
+    std::optional<double> wall_marker_reach;
     /// What markers spread into a wall's ghost images goes back, through the ghost fill's
     /// transpose, onto the fluid those images are made of: D the adjoint of I beside a wall
     bool is_adjoint_at_walls = true;

@@ -66,6 +66,7 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
                                                                  config.simple.momentum_cycles},
       gravity_(gravity), is_paper_contact_(is_paper_contact),
       is_wall_marker_off_(config.coupling.is_wall_marker_off),
+      wall_marker_reach_(config.coupling.wall_marker_reach.value_or(0.0)),
       is_adjoint_at_walls_(config.coupling.is_adjoint_at_walls),
       is_simultaneous_(config.coupling.body_sweep == BodySweep::simultaneous),
       is_lubrication_implicit_(config.lubrication.is_implicit()),
@@ -411,13 +412,14 @@ void OuterIterations<Dim>::couple_bodies(int k, double velocity_scale, const Ste
         previous_velocity_[b] = bodies[b].velocity;
         previous_omega_[b] = bodies[b].omega;
     }
-    const double defect = update_rigid_bodies<Dim>(
-        bodies.all(), grid_, kernel_,
-        RigidUpdateSettings<Dim>{properties_.density, gravity_, in.levels.dt_effective,
-                                 is_paper_contact_, in.levels.history_weight, is_wall_marker_off_,
-                                 is_simultaneous_, adjoint_walls(), is_lubrication_implicit_,
-                                 is_inner_fluid_volume_},
-        state.u); // eqs. (13)–(16)
+    RigidUpdateSettings<Dim> settings{properties_.density,      gravity_,
+                                      in.levels.dt_effective,   is_paper_contact_,
+                                      in.levels.history_weight, is_wall_marker_off_,
+                                      is_simultaneous_,         adjoint_walls(),
+                                      is_lubrication_implicit_, is_inner_fluid_volume_};
+    settings.wall_marker_reach = wall_marker_reach_;
+    const double defect =
+        update_rigid_bodies<Dim>(bodies.all(), grid_, kernel_, settings, state.u); // (13)–(16)
     if (scale <= std::numeric_limits<double>::min()) {
         // Fluid and bodies at rest until this update (the first iteration of a run from rest):
         // measure against the motion it started, not the floor of reference_velocity(), which

@@ -47,6 +47,25 @@ TYPED_TEST(Kernels, VanishesOutsideItsSupport)
     EXPECT_EQ(TypeParam::weight(-TypeParam::half_width - 0.01), 0.0);
 }
 
+TYPED_TEST(Kernels, TheSupportRadiusIsWhereTheWeightEnds)
+{
+    // coupling.markers_off_reach's default is built on it (support + 0.5 cells): zero at and
+    // beyond it, nonzero just inside (roma3's 1.5 is below its stencil half width of 2).
+    const double r = TypeParam::support_radius;
+    EXPECT_NEAR(TypeParam::weight(r), 0.0, 1e-14);
+    EXPECT_EQ(TypeParam::weight(r + 0.01), 0.0);
+    EXPECT_GT(TypeParam::weight(r - 0.01), 0.0); // 6.4e-7 for the smoothed kernel
+    EXPECT_LE(r, TypeParam::half_width);
+}
+
+TEST(Kernels, TheWallMarkerReachIsTheSupportAndHalfACell)
+{
+    EXPECT_EQ(default_wall_marker_reach(support_radius(KernelKind::hat)), 1.5);
+    EXPECT_EQ(default_wall_marker_reach(support_radius(KernelKind::roma3)), 2.0);
+    EXPECT_EQ(default_wall_marker_reach(support_radius(KernelKind::peskin4)), 2.5);
+    EXPECT_EQ(default_wall_marker_reach(support_radius(KernelKind::roma3_smoothed)), 2.5);
+}
+
 TEST(Kernels, TheSmoothedKernelIsRoma3AveragedOverACell)
 {
     // Yang et al. (2009) build φ̃(s) = ∫_{s−1/2}^{s+1/2} φ(t) dt from the three-point kernel φ;

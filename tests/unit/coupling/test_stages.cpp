@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace fddem {
@@ -181,11 +182,14 @@ TEST(RigidUpdate, ABodyMovingWithTheFluidNeedsNoForce)
 TEST(RigidUpdate, MarkersReachingAWallAreOffOnlyWhenAsked)
 {
     // coupling.markers_off_at_walls: a disk 0.01 above the floor of a box at rest, moving up; its
-    // markers within one h (the hat kernel's half width) of a wall get no force, the others the
-    // slip's; without the option every marker gets it.
+    // markers within the reach of a wall get no force, the others the slip's; without the option
+    // every marker gets it. The reach: by default 1.5 h (the hat kernel's support + 0.5), or as
+    // given (coupling.markers_off_reach; 1 h, the rule before 2026-12-01).
     const MacGrid<2> grid = unit_box();
     const double h = 1.0 / 32.0;
-    for (const bool is_simultaneous : {false, true}) {
+    for (const auto& [is_simultaneous, reach] :
+         {std::pair{false, 0.0}, std::pair{true, 0.0}, std::pair{false, 1.0}}) {
+        const double reach_h = (reach > 0.0 ? reach : 1.5) * h;
         const auto run = [&](bool is_off) {
             std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.16))};
             bodies[0].motion = Motion::prescribed; // moves at its velocity whatever the fluid
@@ -196,14 +200,17 @@ TEST(RigidUpdate, MarkersReachingAWallAreOffOnlyWhenAsked)
             RigidUpdateSettings<2> settings{1.0, Vec<2>::Zero(), 0.01, false};
             settings.is_wall_marker_off = is_off;
             settings.is_simultaneous = is_simultaneous;
+            settings.wall_marker_reach = reach;
             (void)update_rigid_bodies<2>(bodies, grid, AnyKernel{HatKernel{}}, settings, u);
             return bodies[0].coupling;
         };
         const MarkerCoupling<2> off = run(true);
         const MarkerCoupling<2> on = run(false);
         int near = 0;
+        int between = 0; // within 1.5 h but not within 1 h: off by default only
         for (std::size_t l = 0; l < off.markers.size(); ++l) {
-            const bool is_near = off.positions[l].y() < h;
+            const bool is_near = off.positions[l].y() < reach_h;
+            between += off.positions[l].y() >= h && off.positions[l].y() < 1.5 * h ? 1 : 0;
             near += is_near ? 1 : 0;
             EXPECT_NEAR(on.lambda[l].y(), 20.0, 1e-12) << l; // the slip 0.2 over Δt = 0.01
             if (is_near) {
@@ -212,7 +219,8 @@ TEST(RigidUpdate, MarkersReachingAWallAreOffOnlyWhenAsked)
                 EXPECT_NEAR(off.lambda[l].y(), 20.0, 1e-12) << l;
             }
         }
-        EXPECT_GT(near, 0); // the test can tell
+        EXPECT_GT(near, 0);    // the test can tell
+        EXPECT_GT(between, 0); // and the two reaches differ
     }
 }
 

@@ -40,7 +40,7 @@ TEST(WallProximity, TheGapIsToTheNearestWallOrInflowInItsAxissCells)
     EXPECT_TRUE(std::isinf(gap_to_walls<3>(Vec<3>(1.6, 0.1, 0.5), 0.25, box, bc, h)));
 }
 
-TEST(WallProximity, OnlyARetractedRingShallowerThanSixTenthsOfACellCounts)
+TEST(WallProximity, OnlyARetractedRingShallowerThanSixTenthsOfACellWithoutTheFullReachCounts)
 {
     CouplingConfig coupling; // the paper's layout
     EXPECT_FALSE(has_shallow_ring_at_walls(coupling));
@@ -54,6 +54,15 @@ TEST(WallProximity, OnlyARetractedRingShallowerThanSixTenthsOfACellCounts)
     coupling.marker_retraction = 0.3;
     EXPECT_TRUE(has_shallow_ring_at_walls(coupling));
     coupling.is_wall_marker_off = true;
+    EXPECT_FALSE(has_shallow_ring_at_walls(coupling)); // the hat kernel's default reach, 1.5 h
+    coupling.wall_marker_reach = 1.5;
+    EXPECT_FALSE(has_shallow_ring_at_walls(coupling));
+    coupling.wall_marker_reach = 1.0; // the rule before 2026-12-01: still drifts (WallSqueeze)
+    EXPECT_TRUE(has_shallow_ring_at_walls(coupling));
+    coupling.kernel = KernelKind::peskin4; // its default reach is 2.5 h
+    coupling.wall_marker_reach = 2.0;
+    EXPECT_TRUE(has_shallow_ring_at_walls(coupling));
+    coupling.wall_marker_reach.reset();
     EXPECT_FALSE(has_shallow_ring_at_walls(coupling));
 }
 
