@@ -55,8 +55,8 @@ wall_ring_warning(const Particles<Dim>& bodies, const PeriodicDomain<Dim>& domai
                 "markers {:g} cells inside its surface (coupling.marker_retraction): there the "
                 "resolved force grows as Δt shrinks and is not a converged quantity "
                 "(docs/method.md §5, \"The retracted ring beside a wall\"); "
-                "coupling.markers_off_at_walls = true (with the default "
-                "coupling.markers_off_reach) keeps it converged",
+                "coupling.markers_off_at_walls = true, at no less than its default "
+                "coupling.markers_off_reach, keeps it bounded in Δt",
                 time, body.id, gap, coupling.marker_retraction);
         }
     }

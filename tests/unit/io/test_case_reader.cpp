@@ -69,6 +69,8 @@ TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
     EXPECT_EQ(c.simple.min_outer_iterations_dem, 2); // the schema's documented defaults
     EXPECT_FALSE(c.simple.is_mass_residual_held);
     EXPECT_TRUE(c.coupling.is_adjoint_at_walls);
+    EXPECT_FALSE(c.coupling.is_wall_marker_off);
+    EXPECT_FALSE(c.coupling.wall_marker_reach.has_value()); // the kernel's support + 0.5 h
     ASSERT_EQ(c.output.lines.size(), 1U);
     EXPECT_EQ(c.output.lines[0].n_points, 101);
 }
@@ -92,6 +94,12 @@ TEST(CaseReader, OverridesSetAndAddKeys)
     EXPECT_EQ(name_of(c.simple.convection), "upwind");
     ASSERT_TRUE(c.time.steady_tolerance.has_value());
     EXPECT_DOUBLE_EQ(*c.time.steady_tolerance, 1e-6);
+    const CaseConfig off =
+        read_case_string(valid_case, "valid.toml",
+                         {"coupling.markers_off_at_walls=true", "coupling.markers_off_reach=1.0"});
+    EXPECT_TRUE(off.coupling.is_wall_marker_off);
+    ASSERT_TRUE(off.coupling.wall_marker_reach.has_value());
+    EXPECT_DOUBLE_EQ(*off.coupling.wall_marker_reach, 1.0);
 }
 
 TEST(CaseReader, OverridesReachOneOrEveryEntryOfATableArray)
