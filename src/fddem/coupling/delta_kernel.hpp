@@ -117,7 +117,7 @@ enum class KernelKind { hat, roma3, peskin4, roma3_smoothed };
 /// coupling.markers_off_reach is not given: the kernel's support radius and half a cell, so that
 /// no marker reads the row of cells beside the wall (whose tangential velocity sits h/2 from it),
 /// the row that drains the fluid squeezed out between a body and the wall (docs/method.md §5,
-/// "The retracted ring beside a wall").
+/// "The wall's row of cells left free").
 [[nodiscard]] inline double default_wall_marker_reach(double kernel_support_radius) noexcept
 {
     return kernel_support_radius + 0.5;

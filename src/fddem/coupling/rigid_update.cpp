@@ -142,7 +142,7 @@ void interpolate_at_markers(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
 /// "The stall in contact, diagnosed"), and the tangential velocity h/2 from the wall, which
 /// drains the fluid squeezed out between a body and the wall: with markers holding it to the
 /// body's motion the resolved force below half a cell grows as Δt shrinks, measured (§5, "The
-/// retracted ring beside a wall").
+/// retracted ring beside a wall" and "The wall's row of cells left free").
 template <int Dim>
 bool reaches_wall(const MacGrid<Dim>& grid, const Vec<Dim>& x, double reach_cells)
 {

@@ -552,9 +552,10 @@ std::vector<KeySpec> case_schema()
                          "With markers_off_at_walls: how close to a wall a marker is switched "
                          "off, in grid spacings. Default: the kernel's support radius + 0.5 "
                          "(hat 1.5, roma3 2, peskin4 and roma3_smoothed 2.5), so that no marker "
-                         "reads the row of cells beside the wall; with less the resolved force "
-                         "of a body below half a cell from the wall grows as Δt shrinks (docs/"
-                         "method.md §5, \"The retracted ring beside a wall\"). Before 2026-12-01 "
+                         "reads the row of cells beside the wall; with less (measured with the "
+                         "hat and roma3 kernels) the resolved force of a body below half a cell "
+                         "from the wall grows as Δt shrinks (docs/method.md §5, \"The wall's row "
+                         "of cells left free\"). Before 2026-12-01 "
                          "it was the kernel's stencil half width (hat 1, the others 2)."),
                      0.0, 5.0, true, false),
               &CaseConfig::coupling, &CouplingConfig::wall_marker_reach));
