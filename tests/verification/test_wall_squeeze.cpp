@@ -63,6 +63,18 @@ double force_at(const ForceAtGaps& run, double gap)
     return 0.0;
 }
 
+/// The force at `gap` [h] in each run (the runs at Δt, Δt/2, Δt/4), printed in μU (per unit
+/// length, U = 1).
+std::vector<double> forces_at(const std::vector<ForceAtGaps>& runs, double gap, double mu)
+{
+    std::vector<double> f;
+    for (const ForceAtGaps& run : runs) {
+        f.push_back(force_at(run, gap));
+    }
+    std::printf("gap %.2f h: %.1f, %.1f, %.1f μU\n", gap, f[0] / mu, f[1] / mu, f[2] / mu);
+    return f;
+}
+
 TEST(WallSqueeze, ThePaperLayoutsResolvedForceSettlesAtAQuarterAndATwentiethOfACell)
 {
     // Δt, Δt/2, Δt/4 with U Δt/h = 0.138, 0.069, 0.034 (the case's header).
@@ -108,11 +120,7 @@ TEST(WallSqueeze, TheRetractedLayoutWithTheWallMarkersOffStaysBoundedAsDtShrinks
     const double h = config.domain.size[1] / config.domain.cells[1];
     const double wall = std::numeric_limits<double>::infinity();
     for (const double gap : {0.25, 0.05}) {
-        std::vector<double> f;
-        for (const ForceAtGaps& run : runs) {
-            f.push_back(force_at(run, gap));
-        }
-        std::printf("gap %.2f h: %.1f, %.1f, %.1f μU\n", gap, f[0] / mu, f[1] / mu, f[2] / mu);
+        const std::vector<double> f = forces_at(runs, gap, mu);
         const auto [low, high] = std::minmax_element(f.begin(), f.end());
         EXPECT_GT(*low, 0.0) << gap;
         // Within a factor 1.5 over a fourfold change of Δt (measured 1.18 and 1.33).
@@ -154,11 +162,7 @@ TEST(TwoDiskSqueeze, ThePaperLayoutsResolvedForceStaysBoundedAsDtShrinks)
                                            pair_squeeze(0.001075)};
     const double mu = read_case(pair_case).fluid.viscosity;
     for (const double gap : {0.25, 0.05}) {
-        std::vector<double> f;
-        for (const ForceAtGaps& run : runs) {
-            f.push_back(force_at(run, gap));
-        }
-        std::printf("gap %.2f h: %.1f, %.1f, %.1f μU\n", gap, f[0] / mu, f[1] / mu, f[2] / mu);
+        const std::vector<double> f = forces_at(runs, gap, mu);
         const auto [low, high] = std::minmax_element(f.begin(), f.end());
         EXPECT_GT(*low, 0.0) << gap;
         EXPECT_LT(*high / *low, 1.5) << gap; // measured 1.27 and 1.25
