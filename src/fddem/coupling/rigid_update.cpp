@@ -2,6 +2,7 @@
 #include "fddem/coupling/rigid_update.hpp"
 
 #include "fddem/core/time_scheme.hpp"
+#include "fddem/coupling/body_midplanes.hpp"
 #include "fddem/coupling/inner_fluid.hpp"
 #include "fddem/coupling/lubrication_coupling.hpp"
 #include "fddem/coupling/marker_routes.hpp"
@@ -159,21 +160,47 @@ bool reaches_wall(const MacGrid<Dim>& grid, const Vec<Dim>& x, double reach_cell
     return false;
 }
 
-/// The markers of one body close to a wall (reaches_wall), with coupling.markers_off_at_walls
-/// (Kempe & Fröhlich 2012b, as Biegert et al. 2017 report): no force; their fluid moves with the
-/// body in eqs. (13)–(14). Decided from the position alone, so alike on every rank of a split
-/// grid. Sets their I(u) and λ*; returns the flags (empty without the option).
+/// The reach of coupling.markers_off_at_walls and coupling.markers_off_between_bodies [cells].
+template <class Kernel>
+double marker_off_reach(double wall_marker_reach) noexcept
+{
+    return wall_marker_reach > 0.0 ? wall_marker_reach
+                                   : default_wall_marker_reach(Kernel::support_radius);
+}
+
+/// The midplanes of coupling.markers_off_between_bodies for every body (none without it), from
+/// the centres where the step's markers were placed: the same on every rank.
+template <int Dim>
+using BodyMidplanes = std::vector<std::vector<Midplane<Dim>>>;
+
 template <int Dim, class Kernel>
-std::vector<char> silence_wall_markers(Particle<Dim>& body, const MacGrid<Dim>& grid,
-                                       const RigidUpdateSettings<Dim>& s)
+BodyMidplanes<Dim> midplanes_of(std::span<const Particle<Dim>> bodies, const MacGrid<Dim>& grid,
+                                const RigidUpdateSettings<Dim>& s)
+{
+    if (!s.is_body_marker_off) {
+        return BodyMidplanes<Dim>(bodies.size());
+    }
+    const double reach = marker_off_reach<Kernel>(s.wall_marker_reach) * grid.spacing().maxCoeff();
+    return body_midplanes<Dim>(bodies, grid.domain(), 2.0 * reach);
+}
+
+/// The markers of one body close to a wall (reaches_wall), with coupling.markers_off_at_walls
+/// (Kempe & Fröhlich 2012b, as Biegert et al. 2017 report), or close to a midplane toward a
+/// neighbour (`planes`, coupling.markers_off_between_bodies): no force; their fluid moves with
+/// the body in eqs. (13)–(14). Decided from the positions alone, so alike on every rank of a
+/// split grid. Sets their I(u) and λ*; returns the flags (empty without either option).
+template <int Dim, class Kernel>
+std::vector<char> silence_markers(Particle<Dim>& body, std::span<const Midplane<Dim>> planes,
+                                  const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s)
 {
     MarkerCoupling<Dim>& c = body.coupling;
-    std::vector<char> is_off(s.is_wall_marker_off ? c.markers.size() : 0, 0);
-    const double reach = s.wall_marker_reach > 0.0
-                             ? s.wall_marker_reach
-                             : default_wall_marker_reach(Kernel::support_radius);
+    const bool is_any_off = s.is_wall_marker_off || (s.is_body_marker_off && !planes.empty());
+    std::vector<char> is_off(is_any_off ? c.markers.size() : 0, 0);
+    const double reach = marker_off_reach<Kernel>(s.wall_marker_reach);
+    const double plane_reach = reach * grid.spacing().maxCoeff();
     for (std::size_t l = 0; l < is_off.size(); ++l) {
-        if (reaches_wall<Dim>(grid, c.positions[l], reach)) {
+        if ((s.is_wall_marker_off && reaches_wall<Dim>(grid, c.positions[l], reach)) ||
+            reaches_midplane<Dim>(c.offsets[l], planes, plane_reach)) {
             is_off[l] = 1;
             c.fluid[l] = body.velocity + cross(body.omega, c.offsets[l]);
             c.lambda_star[l] = Vec<Dim>::Zero();
@@ -201,14 +228,16 @@ double new_forcing(Particle<Dim>& body, const RigidVelocity<Dim>& motion,
     return defect;
 }
 
-/// Eqs. (13)–(15) of one body from its markers' I(u) (c.fluid): the markers off at walls, the
-/// new motion and λ, and coupling.forcing_change. Arithmetic on the body's own record only, the
-/// same on every rank. Returns the rigid-motion defect; `motion` receives U^{n+1}, ω^{n+1}.
+/// Eqs. (13)–(15) of one body from its markers' I(u) (c.fluid): the markers off at walls and
+/// midplanes (`planes`), the new motion and λ, and coupling.forcing_change. Arithmetic on the
+/// body's own record only, the same on every rank. Returns the rigid-motion defect; `motion`
+/// receives U^{n+1}, ω^{n+1}.
 template <int Dim, class Kernel>
-double correct_forcing(Particle<Dim>& body, const MacGrid<Dim>& grid,
-                       const RigidUpdateSettings<Dim>& s, RigidVelocity<Dim>& motion)
+double correct_forcing(Particle<Dim>& body, std::span<const Midplane<Dim>> planes,
+                       const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
+                       RigidVelocity<Dim>& motion)
 {
-    const std::vector<char> is_off = silence_wall_markers<Dim, Kernel>(body, grid, s);
+    const std::vector<char> is_off = silence_markers<Dim, Kernel>(body, planes, grid, s);
     motion = new_motion<Dim>(body, s);
     return new_forcing<Dim>(body, motion, is_off, s);
 }
@@ -220,14 +249,15 @@ double correct_forcing(Particle<Dim>& body, const MacGrid<Dim>& grid,
 /// its new one (`motions`, in the order of `members`). Returns the largest defect.
 template <int Dim, class Kernel>
 double correct_linked_forcing(std::span<Particle<Dim>> bodies, std::span<const std::size_t> members,
-                              const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
+                              const BodyMidplanes<Dim>& planes, const MacGrid<Dim>& grid,
+                              const RigidUpdateSettings<Dim>& s,
                               std::span<RigidVelocity<Dim>> motions)
 {
     std::vector<std::vector<char>> is_off;
     std::vector<RigidBalance<Dim>> balances;
     for (const std::size_t b : members) {
         Particle<Dim>& body = bodies[b];
-        is_off.push_back(silence_wall_markers<Dim, Kernel>(body, grid, s));
+        is_off.push_back(silence_markers<Dim, Kernel>(body, planes[b], grid, s));
         const MarkerCoupling<Dim>& c = body.coupling;
         balances.push_back(rigid_balance<Dim>(input_of(body, s), c.offsets, c.markers.volumes,
                                               c.fluid, c.lambda_star));
@@ -314,15 +344,15 @@ void finish_update(Particle<Dim>& body, const RigidVelocity<Dim>& motion)
 /// bodies before it left it (a Gauss–Seidel sweep over the bodies). Per body: one sum over the
 /// ranks and one reverse halo sum and fill.
 template <int Dim, class Kernel>
-double update_one(Particle<Dim>& body, const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
-                  FaceField<Dim>& u)
+double update_one(Particle<Dim>& body, std::span<const Midplane<Dim>> planes,
+                  const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
 {
     interpolate_at_markers<Dim, Kernel>(grid, u, body.coupling); // I(u)
     const std::size_t self = 0;
     take_inner_fluid<Dim>(std::span<Particle<Dim>>(&body, 1),
                           std::span<const std::size_t>(&self, 1), grid, u, s);
     RigidVelocity<Dim> motion;
-    const double defect = correct_forcing<Dim, Kernel>(body, grid, s, motion);
+    const double defect = correct_forcing<Dim, Kernel>(body, planes, grid, s, motion);
     // eq. (16): u ← u + Δt D(λ − λ*). Across a periodic side the ghosts collect what belongs
     // to the faces on the other side (zeroed first, then accumulated onto their owners) and are
     // filled again, so that the next body's I(u) reads this body's correction there as well.
@@ -352,14 +382,16 @@ LinkedGroups groups_of(std::span<const Particle<Dim>> bodies, const RigidUpdateS
 /// together (correct_linked_forcing), then each one's correction is spread as update_one does.
 template <int Dim, class Kernel>
 double update_group(std::span<Particle<Dim>> bodies, std::span<const std::size_t> members,
-                    const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
+                    const BodyMidplanes<Dim>& planes, const MacGrid<Dim>& grid,
+                    const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
 {
     for (const std::size_t b : members) {
         interpolate_at_markers<Dim, Kernel>(grid, u, bodies[b].coupling); // I(u)
     }
     take_inner_fluid<Dim>(bodies, members, grid, u, s);
     std::vector<RigidVelocity<Dim>> motions(members.size());
-    const double defect = correct_linked_forcing<Dim, Kernel>(bodies, members, grid, s, motions);
+    const double defect =
+        correct_linked_forcing<Dim, Kernel>(bodies, members, planes, grid, s, motions);
     for (std::size_t m = 0; m < members.size(); ++m) {
         Particle<Dim>& body = bodies[members[m]];
         const Box<Dim> window = support_window<Dim, Kernel>(grid, body.coupling.positions);
@@ -379,8 +411,9 @@ double update_group(std::span<Particle<Dim>> bodies, std::span<const std::size_t
 /// supports do not meet get exactly what the sequential sweep gives them; where they meet, the
 /// two sweeps reach the same converged λ by different paths.
 template <int Dim, class Kernel>
-double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& grid,
-                          const RigidUpdateSettings<Dim>& s, FaceField<Dim>& u)
+double update_all_at_once(std::span<Particle<Dim>> bodies, const BodyMidplanes<Dim>& planes,
+                          const MacGrid<Dim>& grid, const RigidUpdateSettings<Dim>& s,
+                          FaceField<Dim>& u)
 {
     for (Particle<Dim>& body : bodies) {
         // I(u), all from the same u. On a split grid a body none of whose markers is in this
@@ -405,14 +438,14 @@ double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& g
             const std::vector<std::size_t>* group = groups.group_starting_at(b);
             if (group != nullptr) {
                 std::vector<RigidVelocity<Dim>> linked(group->size());
-                defect = std::max(
-                    defect, correct_linked_forcing<Dim, Kernel>(bodies, *group, grid, s, linked));
+                defect = std::max(defect, correct_linked_forcing<Dim, Kernel>(
+                                              bodies, *group, planes, grid, s, linked));
                 for (std::size_t m = 0; m < group->size(); ++m) {
                     motions[(*group)[m]] = linked[m];
                 }
             } else if (!groups.is_linked(b)) {
-                defect =
-                    std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], grid, s, motions[b]));
+                defect = std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], planes[b], grid,
+                                                                       s, motions[b]));
             }
         }
     } else {
@@ -424,8 +457,8 @@ double update_all_at_once(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& g
         routes.gather_at_owners(bodies);
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             if (routes.owns(b)) {
-                defect =
-                    std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], grid, s, motions[b]));
+                defect = std::max(defect, correct_forcing<Dim, Kernel>(bodies[b], planes[b], grid,
+                                                                       s, motions[b]));
             }
         }
         routes.return_to_holders(bodies);
@@ -453,8 +486,12 @@ double update_rigid_bodies(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& 
     double defect = 0.0;
     std::visit(
         [&](auto k) {
+            // The midplanes of coupling.markers_off_between_bodies, once per outer iteration
+            // (the markers stay where the step placed them).
+            const BodyMidplanes<Dim> planes = midplanes_of<Dim, decltype(k)>(
+                std::span<const Particle<Dim>>(bodies.data(), bodies.size()), grid, settings);
             if (settings.is_simultaneous) {
-                defect = update_all_at_once<Dim, decltype(k)>(bodies, grid, settings, u);
+                defect = update_all_at_once<Dim, decltype(k)>(bodies, planes, grid, settings, u);
                 return;
             }
             // With the implicit lubrication, the bodies its links join are updated together,
@@ -463,11 +500,11 @@ double update_rigid_bodies(std::span<Particle<Dim>> bodies, const MacGrid<Dim>& 
             for (std::size_t b = 0; b < bodies.size(); ++b) {
                 const std::vector<std::size_t>* group = groups.group_starting_at(b);
                 if (group != nullptr) {
-                    defect = std::max(
-                        defect, update_group<Dim, decltype(k)>(bodies, *group, grid, settings, u));
+                    defect = std::max(defect, update_group<Dim, decltype(k)>(bodies, *group, planes,
+                                                                             grid, settings, u));
                 } else if (!groups.is_linked(b)) {
-                    defect = std::max(defect,
-                                      update_one<Dim, decltype(k)>(bodies[b], grid, settings, u));
+                    defect = std::max(defect, update_one<Dim, decltype(k)>(bodies[b], planes[b],
+                                                                           grid, settings, u));
                 }
             }
         },

@@ -344,16 +344,22 @@ void check_bodies(const CaseDocument& doc, const CaseConfig& c)
                  "take a free body's inner fluid from them: set coupling.inner_fluid = "
                  "\"volume\", or use \"paper\" or \"retracted\"");
     }
-    if (c.coupling.wall_marker_reach.has_value() && !c.coupling.is_wall_marker_off) {
+    if (c.coupling.wall_marker_reach.has_value() && !c.coupling.is_wall_marker_off &&
+        !c.coupling.is_body_marker_off) {
         doc.fail("coupling.markers_off_reach", doc.node("coupling", "markers_off_reach"),
-                 "coupling.markers_off_at_walls is off, so the reach would be ignored: set "
-                 "coupling.markers_off_at_walls = true, or remove the reach");
+                 "coupling.markers_off_at_walls and coupling.markers_off_between_bodies are "
+                 "off, so the reach would be ignored: set one of them to true, or remove the "
+                 "reach");
     }
-    if (c.coupling.inner_fluid == InnerFluidSource::volume && c.coupling.is_wall_marker_off) {
+    if (c.coupling.inner_fluid == InnerFluidSource::volume &&
+        (c.coupling.is_wall_marker_off || c.coupling.is_body_marker_off)) {
+        const char* option = c.coupling.is_wall_marker_off ? "coupling.markers_off_at_walls"
+                                                           : "coupling.markers_off_between_bodies";
         doc.fail("coupling.inner_fluid", doc.node("coupling", "inner_fluid"),
-                 "\"volume\" integrates the fluid inside a body as it is, so the markers "
-                 "coupling.markers_off_at_walls silences would not have their fluid taken as the "
-                 "body's: use one option or the other");
+                 fmt::format("\"volume\" integrates the fluid inside a body as it is, so the "
+                             "markers {} silences would not have their fluid taken as the body's: "
+                             "use one option or the other",
+                             option));
     }
     if (c.coupling.inner_fluid == InnerFluidSource::volume && has_free_body(c) &&
         c.time.scheme == TimeScheme::bdf2) {

@@ -547,15 +547,27 @@ std::vector<KeySpec> case_schema()
                           "the wall, which drains the fluid squeezed out under a body (§5, the "
                           "retracted ring beside a wall). false: every marker acts, as the paper."),
                       &CaseConfig::coupling, &CouplingConfig::is_wall_marker_off));
+    s.push_back(bound(key("coupling", "markers_off_between_bodies", T::boolean, none, "false",
+                          "Switch off, for the outer iteration, every marker closer than "
+                          "coupling.markers_off_reach to the plane midway between its body's "
+                          "surface and a neighbour's: the wall rule of markers_off_at_walls with "
+                          "the midplane as the wall (a symmetry plane when two equal bodies close "
+                          "at equal speeds). Without it the two bodies' markers both hold the "
+                          "cells of the film between them, and the retracted layout's resolved "
+                          "force below a cell grows as Δt shrinks (docs/method.md §5, \"The row "
+                          "of cells between two bodies left free\"). false: every marker acts, as "
+                          "the paper."),
+                      &CaseConfig::coupling, &CouplingConfig::is_body_marker_off));
     s.push_back(
         bound(ranged(key("coupling", "markers_off_reach", T::real, none, "none",
-                         "With markers_off_at_walls: how close to a wall a marker is switched "
-                         "off, in grid spacings. Default: the kernel's support radius + 0.5 "
-                         "(hat 1.5, roma3 2, peskin4 and roma3_smoothed 2.5), so that no marker "
-                         "reads the row of cells beside the wall; with less (measured with the "
-                         "hat and roma3 kernels) the resolved force of a body below half a cell "
-                         "from the wall grows as Δt shrinks (docs/method.md §5, \"The wall's row "
-                         "of cells left free\"). Before 2026-12-01 "
+                         "With markers_off_at_walls (or markers_off_between_bodies): how close "
+                         "to a wall (or a midplane, in the grid's largest spacing) a marker is "
+                         "switched off, in grid spacings. Default: the kernel's support radius + "
+                         "0.5 (hat 1.5, roma3 2, peskin4 and roma3_smoothed 2.5), so that no "
+                         "marker reads the row of cells beside the wall; with less (measured with "
+                         "the hat and roma3 kernels) the resolved force of a body below half a "
+                         "cell from the wall grows as Δt shrinks (docs/method.md §5, \"The wall's "
+                         "row of cells left free\"). Before 2026-12-01 "
                          "it was the kernel's stencil half width (hat 1, the others 2)."),
                      0.0, 5.0, true, false),
               &CaseConfig::coupling, &CouplingConfig::wall_marker_reach));
@@ -599,7 +611,8 @@ std::vector<KeySpec> case_schema()
                   "integrated over the cells the body covers, weighted by their volume "
                   "fractions, now and at the step's start: Kempe & Fröhlich 2012). volume "
                   "lets the surface marker layout move free bodies; not with time.scheme = "
-                  "\"bdf2\" nor coupling.markers_off_at_walls (docs/method.md §4, \"The fluid "
+                  "\"bdf2\" nor coupling.markers_off_at_walls or markers_off_between_bodies "
+                  "(docs/method.md §4, \"The fluid "
                   "inside a body\")."),
               &CaseConfig::coupling, &CouplingConfig::inner_fluid));
 

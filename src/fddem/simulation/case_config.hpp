@@ -200,6 +200,9 @@ struct CouplingConfig {
     bool is_wall_marker_off = false;
     /// coupling.markers_off_reach [cells]; none: default_wall_marker_reach of the kernel
     std::optional<double> wall_marker_reach;
+    /// coupling.markers_off_between_bodies: markers closer than the same reach to the plane
+    /// midway between their body's surface and a neighbour's take no part (fddem's)
+    bool is_body_marker_off = false;
     /// What markers spread into a wall's ghost images goes back, through the ghost fill's
     /// transpose, onto the fluid those images are made of: D the adjoint of I beside a wall
     bool is_adjoint_at_walls = true;

@@ -67,6 +67,7 @@ OuterIterations<Dim>::OuterIterations(const MacGrid<Dim>& grid, const BoundaryCo
       gravity_(gravity), is_paper_contact_(is_paper_contact),
       is_wall_marker_off_(config.coupling.is_wall_marker_off),
       wall_marker_reach_(config.coupling.wall_marker_reach.value_or(0.0)),
+      is_body_marker_off_(config.coupling.is_body_marker_off),
       is_adjoint_at_walls_(config.coupling.is_adjoint_at_walls),
       is_simultaneous_(config.coupling.body_sweep == BodySweep::simultaneous),
       is_lubrication_implicit_(config.lubrication.is_implicit()),
@@ -418,6 +419,7 @@ void OuterIterations<Dim>::couple_bodies(int k, double velocity_scale, const Ste
                                       is_simultaneous_,         adjoint_walls(),
                                       is_lubrication_implicit_, is_inner_fluid_volume_};
     settings.wall_marker_reach = wall_marker_reach_;
+    settings.is_body_marker_off = is_body_marker_off_;
     const double defect =
         update_rigid_bodies<Dim>(bodies.all(), grid_, kernel_, settings, state.u); // (13)–(16)
     if (scale <= std::numeric_limits<double>::min()) {

@@ -161,6 +161,7 @@ private:
     bool is_paper_contact_;
     bool is_wall_marker_off_;  ///< coupling.markers_off_at_walls
     double wall_marker_reach_; ///< coupling.markers_off_reach [cells]; 0: the kernel's default
+    bool is_body_marker_off_;  ///< coupling.markers_off_between_bodies
     bool is_adjoint_at_walls_; ///< coupling.adjoint_at_walls
     bool is_simultaneous_;     ///< coupling.body_sweep = "simultaneous"
     /// lubrication.enabled with lubrication.coupling = "implicit"

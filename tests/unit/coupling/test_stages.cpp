@@ -179,6 +179,26 @@ TEST(RigidUpdate, ABodyMovingWithTheFluidNeedsNoForce)
     EXPECT_NEAR(u[0](Index<2>{16, 16}), 0.2, 1e-14);
 }
 
+/// Prescribed `bodies` moving up at 0.2 through the fluid at rest of `grid`, their markers
+/// placed, after one rigid update (13)–(16) with `options` (Δt = 0.01: a marker that acts gets
+/// λ = 20, the slip over Δt).
+std::vector<Particle<2>> rising_after_one_update(std::vector<Particle<2>> bodies,
+                                                 const MacGrid<2>& grid,
+                                                 RigidUpdateSettings<2> options)
+{
+    for (Particle<2>& p : bodies) {
+        p.motion = Motion::prescribed; // moves at its velocity whatever the fluid
+        p.velocity = p.velocity_n = Vec<2>(0.0, 0.2);
+    }
+    FaceField<2> u(grid);
+    place_markers<2>(bodies, grid, AnyKernel{HatKernel{}}, 0, 0.0);
+    options.fluid_density = 1.0;
+    options.gravity = Vec<2>::Zero();
+    options.dt = 0.01;
+    (void)update_rigid_bodies<2>(bodies, grid, AnyKernel{HatKernel{}}, options, u);
+    return bodies;
+}
+
 TEST(RigidUpdate, MarkersReachingAWallAreOffOnlyWhenAsked)
 {
     // coupling.markers_off_at_walls: a disk 0.01 above the floor of a box at rest, moving up; its
@@ -191,18 +211,11 @@ TEST(RigidUpdate, MarkersReachingAWallAreOffOnlyWhenAsked)
          {std::pair{false, 0.0}, std::pair{true, 0.0}, std::pair{false, 1.0}}) {
         const double reach_h = (reach > 0.0 ? reach : 1.5) * h;
         const auto run = [&](bool is_off) {
-            std::vector<Particle<2>> bodies{disk_at(Vec<2>(0.5, 0.16))};
-            bodies[0].motion = Motion::prescribed; // moves at its velocity whatever the fluid
-            bodies[0].velocity_n = Vec<2>(0.0, 0.2);
-            bodies[0].velocity = Vec<2>(0.0, 0.2);
-            FaceField<2> u(grid);
-            place_markers<2>(bodies, grid, AnyKernel{HatKernel{}}, 0, 0.0);
-            RigidUpdateSettings<2> settings{1.0, Vec<2>::Zero(), 0.01, false};
-            settings.is_wall_marker_off = is_off;
-            settings.is_simultaneous = is_simultaneous;
-            settings.wall_marker_reach = reach;
-            (void)update_rigid_bodies<2>(bodies, grid, AnyKernel{HatKernel{}}, settings, u);
-            return bodies[0].coupling;
+            RigidUpdateSettings<2> options{1.0, Vec<2>::Zero(), 0.01, false};
+            options.is_wall_marker_off = is_off;
+            options.is_simultaneous = is_simultaneous;
+            options.wall_marker_reach = reach;
+            return rising_after_one_update({disk_at(Vec<2>(0.5, 0.16))}, grid, options)[0].coupling;
         };
         const MarkerCoupling<2> off = run(true);
         const MarkerCoupling<2> on = run(false);
@@ -221,6 +234,50 @@ TEST(RigidUpdate, MarkersReachingAWallAreOffOnlyWhenAsked)
         }
         EXPECT_GT(near, 0);    // the test can tell
         EXPECT_GT(between, 0); // and the two reaches differ
+    }
+}
+
+TEST(RigidUpdate, MarkersNearTheMidplaneBetweenTwoBodiesAreOffOnlyWhenAsked)
+{
+    // coupling.markers_off_between_bodies: two disks 0.02 apart (0.64 h), both moving up in a
+    // fluid at rest; the markers of each closer than 1.5 h (the hat's default reach) to the
+    // plane midway between the surfaces get no force, the others the slip's. Without the option
+    // every marker gets it; with markers_off_at_walls alone none is off (no wall is near).
+    const MacGrid<2> grid = unit_box();
+    const double h = 1.0 / 32.0;
+    const double diameter = 0.3;
+    const double gap = 0.02;
+    const double mid = 0.5; // the midplane x = 0.5
+    for (const bool is_simultaneous : {false, true}) {
+        const auto run = [&](bool is_between_off, bool is_wall_off) {
+            RigidUpdateSettings<2> options{1.0, Vec<2>::Zero(), 0.01, false};
+            options.is_body_marker_off = is_between_off;
+            options.is_wall_marker_off = is_wall_off;
+            options.is_simultaneous = is_simultaneous;
+            return rising_after_one_update(
+                {disk_at(Vec<2>(mid - 0.5 * (diameter + gap), 0.5), diameter),
+                 disk_at(Vec<2>(mid + 0.5 * (diameter + gap), 0.5), diameter)},
+                grid, options);
+        };
+        const std::vector<Particle<2>> off = run(true, false);
+        const std::vector<Particle<2>> walls_only = run(false, true);
+        int near = 0;
+        for (std::size_t b = 0; b < 2; ++b) {
+            const MarkerCoupling<2>& c = off[b].coupling;
+            for (std::size_t l = 0; l < c.markers.size(); ++l) {
+                const bool is_near = std::abs(c.positions[l].x() - mid) < 1.5 * h;
+                near += is_near ? 1 : 0;
+                EXPECT_NEAR(walls_only[b].coupling.lambda[l].y(), 20.0, 1e-12) << b << " " << l;
+                if (is_near) {
+                    EXPECT_EQ(c.lambda[l].norm(), 0.0) << b << " " << l;
+                    // its fluid taken as the body's motion in (13)–(14)
+                    EXPECT_NEAR(c.fluid[l].y(), 0.2, 1e-15) << b << " " << l;
+                } else {
+                    EXPECT_NEAR(c.lambda[l].y(), 20.0, 1e-12) << b << " " << l;
+                }
+            }
+        }
+        EXPECT_GT(near, 4); // markers of both disks (the test can tell)
     }
 }
 

@@ -100,6 +100,15 @@ TEST(CaseReader, OverridesSetAndAddKeys)
     EXPECT_TRUE(off.coupling.is_wall_marker_off);
     ASSERT_TRUE(off.coupling.wall_marker_reach.has_value());
     EXPECT_DOUBLE_EQ(*off.coupling.wall_marker_reach, 1.0);
+    EXPECT_FALSE(off.coupling.is_body_marker_off);
+    // the reach serves coupling.markers_off_between_bodies alone as well
+    const CaseConfig between = read_case_string(
+        valid_case, "valid.toml",
+        {"coupling.markers_off_between_bodies=true", "coupling.markers_off_reach=2.0"});
+    EXPECT_TRUE(between.coupling.is_body_marker_off);
+    EXPECT_FALSE(between.coupling.is_wall_marker_off);
+    ASSERT_TRUE(between.coupling.wall_marker_reach.has_value());
+    EXPECT_DOUBLE_EQ(*between.coupling.wall_marker_reach, 2.0);
 }
 
 TEST(CaseReader, OverridesReachOneOrEveryEntryOfATableArray)
@@ -412,7 +421,22 @@ std::vector<BadCase> bad_cases()
          f,
          23,
          "coupling.markers_off_reach",
-         "coupling.markers_off_at_walls is off, so the reach would be ignored"},
+         "coupling.markers_off_at_walls and coupling.markers_off_between_bodies are off, so "
+         "the reach would be ignored"},
+        {"inner_fluid_from_the_cells_with_markers_off_between_bodies",
+         v + body + "[coupling]\ninner_fluid = \"volume\"\nmarkers_off_between_bodies = true\n",
+         {},
+         f,
+         23,
+         "coupling.inner_fluid",
+         "the markers coupling.markers_off_between_bodies silences"},
+        {"markers_off_between_bodies_not_a_boolean",
+         v + body + "[coupling]\nmarkers_off_between_bodies = 1\n",
+         {},
+         f,
+         23,
+         "coupling.markers_off_between_bodies",
+         "boolean"},
         {"markers_off_reach_of_zero",
          v + body + "[coupling]\nmarkers_off_at_walls = true\nmarkers_off_reach = 0.0\n",
          {},

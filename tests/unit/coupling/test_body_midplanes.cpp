@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: MIT
+// The planes midway between the surfaces of two close bodies (coupling/body_midplanes.hpp), for
+// coupling.markers_off_between_bodies.
+
+#include "fddem/coupling/body_midplanes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace fddem {
+namespace {
+
+Particle<3> sphere(const Vec<3>& centre, double diameter)
+{
+    Particle<3> p;
+    p.shape = Ball<3>{diameter};
+    p.centre = centre;
+    return p;
+}
+
+TEST(BodyMidplanes, LieHalfWayAcrossTheGapFacingTheNeighbour)
+{
+    // Radii 0.5 and 0.25, centres 1.0 apart along a skew direction: gap 0.25, so the plane is
+    // 0.5 + 0.125 from the first centre and 0.25 + 0.125 from the second, each facing the other.
+    const Vec<3> n = Vec<3>(1.0, 2.0, 2.0) / 3.0;
+    const Vec<3> a(2.0, 2.0, 2.0);
+    const std::vector<Particle<3>> bodies{sphere(a, 1.0), sphere(a + n, 0.5),
+                                          sphere(Vec<3>(0.5, 3.5, 0.5), 1.0)}; // far away
+    const PeriodicDomain<3> box{Vec<3>::Zero(), Vec<3>(4.0, 4.0, 4.0), {}};
+    const auto planes = body_midplanes<3>(bodies, box, 0.3);
+    ASSERT_EQ(planes.size(), 3u);
+    ASSERT_EQ(planes[0].size(), 1u);
+    ASSERT_EQ(planes[1].size(), 1u);
+    EXPECT_TRUE(planes[2].empty());
+    EXPECT_NEAR((planes[0][0].normal - n).norm(), 0.0, 1e-15);
+    EXPECT_NEAR(planes[0][0].distance, 0.625, 1e-15);
+    EXPECT_NEAR((planes[1][0].normal + n).norm(), 0.0, 1e-15);
+    EXPECT_NEAR(planes[1][0].distance, 0.375, 1e-15);
+    // The two planes are the same plane: a's centre + 0.625 n is b's centre − 0.375 n.
+    EXPECT_NEAR((a + 0.625 * n - (a + n - 0.375 * n)).norm(), 0.0, 1e-15);
+    // A gap above the limit has no plane.
+    EXPECT_TRUE(body_midplanes<3>(bodies, box, 0.2)[0].empty());
+}
+
+TEST(BodyMidplanes, FindTheNeighbourAcrossAPeriodicSide)
+{
+    // Two unit spheres 0.1 apart across x = 0 of a box periodic in x: the plane faces −x from
+    // the sphere near x = 4 only through the periodic side; in a box with walls there is none.
+    const std::vector<Particle<3>> bodies{sphere(Vec<3>(0.55, 1.0, 1.0), 1.0),
+                                          sphere(Vec<3>(3.45, 1.0, 1.0), 1.0)};
+    const PeriodicDomain<3> periodic{Vec<3>::Zero(), Vec<3>(4.0, 4.0, 4.0), {true, false, false}};
+    const auto planes = body_midplanes<3>(bodies, periodic, 0.2);
+    ASSERT_EQ(planes[0].size(), 1u);
+    ASSERT_EQ(planes[1].size(), 1u);
+    EXPECT_NEAR((planes[0][0].normal - Vec<3>(-1.0, 0.0, 0.0)).norm(), 0.0, 1e-12);
+    EXPECT_NEAR(planes[0][0].distance, 0.55, 1e-12);
+    EXPECT_NEAR((planes[1][0].normal - Vec<3>(1.0, 0.0, 0.0)).norm(), 0.0, 1e-12);
+    const PeriodicDomain<3> walled{Vec<3>::Zero(), Vec<3>(4.0, 4.0, 4.0), {}};
+    EXPECT_TRUE(body_midplanes<3>(bodies, walled, 0.2)[0].empty());
+}
+
+TEST(BodyMidplanes, AMarkerIsWithinReachOnlyNearItsSideOfAPlane)
+{
+    const std::vector<Midplane<2>> planes{{Vec<2>(1.0, 0.0), 1.2}};
+    EXPECT_TRUE(reaches_midplane<2>(Vec<2>(0.9, 0.0), planes, 0.35));   // 0.3 from it
+    EXPECT_FALSE(reaches_midplane<2>(Vec<2>(0.8, 0.0), planes, 0.35));  // 0.4 from it
+    EXPECT_FALSE(reaches_midplane<2>(Vec<2>(0.9, 0.0), planes, 0.25));  // reach shorter
+    EXPECT_FALSE(reaches_midplane<2>(Vec<2>(-0.9, 0.0), planes, 0.35)); // far side of the body
+    EXPECT_TRUE(reaches_midplane<2>(Vec<2>(1.5, 0.0), planes, 0.35));   // beyond the plane
+    EXPECT_FALSE(reaches_midplane<2>(Vec<2>(0.9, 0.0), {}, 0.35));      // no neighbour
+}
+
+} // namespace
+} // namespace fddem
