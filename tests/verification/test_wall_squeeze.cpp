@@ -13,6 +13,7 @@
 #include "fddem/io/case_reader.hpp"
 #include "fddem/simulation/simulation.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fddem {
@@ -136,12 +138,15 @@ TEST(WallSqueeze, TheRetractedLayoutWithTheWallMarkersOffStaysBoundedAsDtShrinks
 const std::string pair_case =
     std::string(FDDEM_SOURCE_DIR) + "/cases/verification/two_disk_squeeze/case.toml";
 
-/// The two-disk case at `dt`: the gap between the disks [h] and the resolved force on the first
-/// toward it from the second (−fx), at the end of each step.
-ForceAtGaps pair_squeeze(double dt, std::vector<std::string> overrides = {})
+/// A case of two bodies driven toward each other (`case_file`, Dim 2 or 3) at `dt`: the gap
+/// between them [h] and the resolved force on the first toward it from the second (along the
+/// line of centres), at the end of each step.
+template <int Dim>
+ForceAtGaps squeeze_pair(const std::string& case_file, double dt,
+                         std::vector<std::string> overrides = {})
 {
     overrides.push_back("time.dt=" + std::to_string(dt));
-    Simulation<2> sim(read_case(pair_case, overrides));
+    Simulation<Dim> sim(read_case(case_file, overrides));
     const double h = sim.grid().spacing().x();
     ForceAtGaps out;
     bool is_finished = false;
@@ -149,10 +154,17 @@ ForceAtGaps pair_squeeze(double dt, std::vector<std::string> overrides = {})
         is_finished = sim.is_finished(sim.advance());
         const auto& a = sim.bodies()[0];
         const auto& b = sim.bodies()[1];
-        out.gap.push_back((b.centre.x() - a.centre.x() - a.radius() - b.radius()) / h);
-        out.force.push_back(-a.force.x());
+        const Vec<Dim> apart = b.centre - a.centre;
+        out.gap.push_back((apart.norm() - a.radius() - b.radius()) / h);
+        out.force.push_back(-a.force.dot(apart) / apart.norm());
     }
     return out;
+}
+
+/// The two-disk case at `dt`.
+ForceAtGaps pair_squeeze(double dt, std::vector<std::string> overrides = {})
+{
+    return squeeze_pair<2>(pair_case, dt, std::move(overrides));
 }
 
 TEST(TwoDiskSqueeze, ThePaperLayoutsResolvedForceStaysBoundedAsDtShrinks)
@@ -204,6 +216,39 @@ TEST(TwoDiskSqueeze, TheRetractedLayoutWithTheMarkersBetweenOffStaysBoundedAsDtS
     }
 }
 
+TEST(TwoDiskSqueeze, ADiagonalPairWithTheMarkersBetweenOffStaysBoundedAsDtShrinks)
+{
+    // The two-disk case turned by 45° (a 2 × 2 box periodic both ways, 64 × 64 cells, the disks
+    // closing along the diagonal at 1 each), retracted layout, coupling.markers_off_between_bodies:
+    // the reach along a diagonal is √2 × 1.5 h (reach_along, the kernel's box). Measured 99.2,
+    // 84.5, 117.9 μU at 0.25 h and 63.4, 108.0, 112.4 at 0.05 h at Δt, Δt/2, Δt/4 (factors 1.39
+    // and 1.77); with a reach of 1.5 h whatever the direction 186, 264, 328 (a steady rise);
+    // with the option off 1036, 2981, 10 901 and 1654, 6221, 21 994 (factors 10.5 and 13.3).
+    const double c = std::sqrt(0.5);
+    const double half_apart = 0.375; // the centres 0.75 apart: gap 0.5 = 2 d
+    const auto at = [](double x, double y) { return fmt::format("[{:.17g},{:.17g}]", x, y); };
+    const std::vector<std::string> diagonal = {
+        "coupling.markers=\"retracted\"",
+        "coupling.markers_off_between_bodies=true",
+        "domain.size=[2.0,2.0]",
+        "domain.cells=[64,64]",
+        "domain.periodic=[true,true]",
+        "bodies.1.position=" + at(1.0 - half_apart * c, 1.0 - half_apart * c),
+        "bodies.1.velocity=" + at(c, c),
+        "bodies.2.position=" + at(1.0 + half_apart * c, 1.0 + half_apart * c),
+        "bodies.2.velocity=" + at(-c, -c)};
+    const std::vector<ForceAtGaps> runs = {pair_squeeze(0.0043, diagonal),
+                                           pair_squeeze(0.00215, diagonal),
+                                           pair_squeeze(0.001075, diagonal)};
+    const double mu = read_case(pair_case).fluid.viscosity;
+    for (const double gap : {0.25, 0.05}) {
+        const std::vector<double> f = forces_at(runs, gap, mu);
+        const auto [low, high] = std::minmax_element(f.begin(), f.end());
+        EXPECT_GT(*low, 0.0) << gap;
+        EXPECT_LT(*high / *low, 2.5) << gap; // measured 1.39 and 1.77
+    }
+}
+
 const std::string sphere_pair_case =
     std::string(FDDEM_SOURCE_DIR) + "/cases/verification/two_sphere_squeeze/case.toml";
 
@@ -213,21 +258,9 @@ TEST(TwoSphereSqueeze, TheRetractedLayoutWithTheMarkersBetweenOffStaysBoundedAsD
     // set), the resolved force over 6πμaU at Δt, Δt/2, Δt/4: measured 5.62, 6.22, 6.00 at 0.25 h
     // and 6.36, 6.41, 5.93 at 0.05 h; with the option off 15.2, 23.5, 36.6 and 21.3, 41.8, 67.0
     // (factors 2.4 and 3.1, which the bound below catches).
-    const auto run = [](double dt) {
-        Simulation<3> sim(read_case(sphere_pair_case, {"time.dt=" + std::to_string(dt)}));
-        const double h = sim.grid().spacing().x();
-        ForceAtGaps out;
-        bool is_finished = false;
-        while (!is_finished) {
-            is_finished = sim.is_finished(sim.advance());
-            const auto& a = sim.bodies()[0];
-            const auto& b = sim.bodies()[1];
-            out.gap.push_back((b.centre.x() - a.centre.x() - a.radius() - b.radius()) / h);
-            out.force.push_back(-a.force.x());
-        }
-        return out;
-    };
-    const std::vector<ForceAtGaps> runs = {run(0.016), run(0.008), run(0.004)};
+    const std::vector<ForceAtGaps> runs = {squeeze_pair<3>(sphere_pair_case, 0.016),
+                                           squeeze_pair<3>(sphere_pair_case, 0.008),
+                                           squeeze_pair<3>(sphere_pair_case, 0.004)};
     const CaseConfig config = read_case(sphere_pair_case);
     const double radius = 0.5 * config.bodies.front().diameter;
     const double stokes = 6.0 * std::numbers::pi * config.fluid.viscosity * radius; // U = 1

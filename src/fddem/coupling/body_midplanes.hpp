@@ -30,31 +30,49 @@ namespace fddem {
 /// The plane between a body and one neighbour: the points r (relative to the body's centre,
 /// nearest images across periodic sides) with normal · r = distance. `normal` is the unit vector
 /// from the body's centre toward the neighbour's, `distance` = the body's radius + half the gap
-/// between the surfaces.
+/// between the surfaces (the plane bisects the gap on the line of centres). A marker closer to
+/// it than `reach` [m] is off.
 template <int Dim>
 struct Midplane {
     Vec<Dim> normal = Vec<Dim>::Zero();
     double distance = 0.0;
+    double reach = 0.0;
 };
 
-/// For each body, the midplanes to every other body whose surface gap is below `gap_limit` [m]
-/// (a marker can be within reach r of a midplane only if the gap is below 2 r), in the order of
-/// the neighbours' indices. Found with a cell list: linear in the number of bodies at a bounded
-/// density. Overlapping bodies (a negative gap) get a plane inside them, which switches off the
-/// markers beyond it as well.
+/// The reach from a plane of normal `normal` of `reach_cells` grid spacings: reach_cells ·
+/// Σ_d |n_d| h_d. The kernels are products of 1-D kernels, so a marker's support is a box, which
+/// reaches Σ_d |n_d| s h_d along n (s its half width in cells): √2 (2D) or √3 (3D) times s h on
+/// a diagonal. Scaled so, the rule keeps the kernel off the cells next to the plane whatever the
+/// pair's direction, as the wall's rule does for its axis-aligned walls (where this is
+/// reach_cells · h of the wall's axis, the same).
+template <int Dim>
+[[nodiscard]] double reach_along(const Vec<Dim>& normal, const Vec<Dim>& spacing,
+                                 double reach_cells) noexcept
+{
+    return reach_cells * normal.cwiseAbs().dot(spacing);
+}
+
+/// For each body, the midplanes to every other body close enough for a marker to come within
+/// reach of the plane between them (`reach_cells` grid spacings of `spacing`, along the plane's
+/// normal: reach_along), in the order of the neighbours' indices. Found with a cell list: linear
+/// in the number of bodies at a bounded density. Overlapping bodies (a negative gap) get a plane
+/// inside them, which switches off the markers beyond it as well; bodies whose centres coincide
+/// get none (no direction). Each pair is found once, through its nearest images: a pair close
+/// through two images at once (a box narrower than twice the range) gets one plane, and no
+/// body gets one to its own periodic image.
 template <int Dim>
 [[nodiscard]] std::vector<std::vector<Midplane<Dim>>>
 body_midplanes(std::span<const Particle<Dim>> bodies, const PeriodicDomain<Dim>& domain,
-               double gap_limit);
+               const Vec<Dim>& spacing, double reach_cells);
 
-/// Whether a marker at `offset` from its body's centre lies closer than `reach` [m] to one of
-/// the body's midplanes (or beyond one).
+/// Whether a marker at `offset` from its body's centre lies within the reach of one of the
+/// body's midplanes (or beyond one).
 template <int Dim>
-[[nodiscard]] bool reaches_midplane(const Vec<Dim>& offset, std::span<const Midplane<Dim>> planes,
-                                    double reach) noexcept
+[[nodiscard]] bool reaches_midplane(const Vec<Dim>& offset,
+                                    std::span<const Midplane<Dim>> planes) noexcept
 {
     for (const Midplane<Dim>& plane : planes) {
-        if (plane.distance - plane.normal.dot(offset) < reach) {
+        if (plane.distance - plane.normal.dot(offset) < plane.reach) {
             return true;
         }
     }

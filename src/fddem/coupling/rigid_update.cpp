@@ -168,11 +168,12 @@ double marker_off_reach(double wall_marker_reach) noexcept
                                    : default_wall_marker_reach(Kernel::support_radius);
 }
 
-/// The midplanes of coupling.markers_off_between_bodies for every body (none without it), from
-/// the centres where the step's markers were placed: the same on every rank.
+/// Each body's midplanes (coupling/body_midplanes.hpp), in the order of the bodies.
 template <int Dim>
 using BodyMidplanes = std::vector<std::vector<Midplane<Dim>>>;
 
+/// The midplanes of coupling.markers_off_between_bodies for every body (none without it), from
+/// the centres where the step's markers were placed: the same on every rank.
 template <int Dim, class Kernel>
 BodyMidplanes<Dim> midplanes_of(std::span<const Particle<Dim>> bodies, const MacGrid<Dim>& grid,
                                 const RigidUpdateSettings<Dim>& s)
@@ -180,8 +181,8 @@ BodyMidplanes<Dim> midplanes_of(std::span<const Particle<Dim>> bodies, const Mac
     if (!s.is_body_marker_off) {
         return BodyMidplanes<Dim>(bodies.size());
     }
-    const double reach = marker_off_reach<Kernel>(s.wall_marker_reach) * grid.spacing().maxCoeff();
-    return body_midplanes<Dim>(bodies, grid.domain(), 2.0 * reach);
+    return body_midplanes<Dim>(bodies, grid.domain(), grid.spacing(),
+                               marker_off_reach<Kernel>(s.wall_marker_reach));
 }
 
 /// The markers of one body close to a wall (reaches_wall), with coupling.markers_off_at_walls
@@ -197,10 +198,9 @@ std::vector<char> silence_markers(Particle<Dim>& body, std::span<const Midplane<
     const bool is_any_off = s.is_wall_marker_off || (s.is_body_marker_off && !planes.empty());
     std::vector<char> is_off(is_any_off ? c.markers.size() : 0, 0);
     const double reach = marker_off_reach<Kernel>(s.wall_marker_reach);
-    const double plane_reach = reach * grid.spacing().maxCoeff();
     for (std::size_t l = 0; l < is_off.size(); ++l) {
         if ((s.is_wall_marker_off && reaches_wall<Dim>(grid, c.positions[l], reach)) ||
-            reaches_midplane<Dim>(c.offsets[l], planes, plane_reach)) {
+            reaches_midplane<Dim>(c.offsets[l], planes)) {
             is_off[l] = 1;
             c.fluid[l] = body.velocity + cross(body.omega, c.offsets[l]);
             c.lambda_star[l] = Vec<Dim>::Zero();

@@ -60,7 +60,8 @@ struct RigidUpdateSettings {
     bool is_inner_fluid_volume = false;
     /// With is_wall_marker_off: how close to a wall [cells of that side's axis] a marker is off;
     /// 0: default_wall_marker_reach of the kernel (its support radius + 1/2). With
-    /// is_body_marker_off the same reach (in the grid's largest spacing) from a midplane.
+    /// is_body_marker_off the same reach from a midplane, in spacings along its normal
+    /// (coupling/body_midplanes.hpp, reach_along).
     double wall_marker_reach = 0.0;
     /// coupling.markers_off_between_bodies: markers closer than the reach to the plane midway
     /// between their body's surface and a neighbour's (coupling/body_midplanes.hpp) take no part,

@@ -561,8 +561,9 @@ std::vector<KeySpec> case_schema()
     s.push_back(
         bound(ranged(key("coupling", "markers_off_reach", T::real, none, "none",
                          "With markers_off_at_walls (or markers_off_between_bodies): how close "
-                         "to a wall (or a midplane, in the grid's largest spacing) a marker is "
-                         "switched off, in grid spacings. Default: the kernel's support radius + "
+                         "to a wall (or a midplane: r Σ|n_d| h_d along its normal n, the kernel "
+                         "box's reach) a marker is switched off, in grid spacings. Default: the "
+                         "kernel's support radius + "
                          "0.5 (hat 1.5, roma3 2, peskin4 and roma3_smoothed 2.5), so that no "
                          "marker reads the row of cells beside the wall; with less (measured with "
                          "the hat and roma3 kernels) the resolved force of a body below half a "
