@@ -5,8 +5,9 @@
 
 For each run (cases/validation/gondret_rebound_st152, ..._st27) and for the digitised data
 (cases/validation/rebound_stokes/), measured the same way (python/fddem/rebound.py): the first
-contact t_c, the impact velocity v_in and rebound velocity v_out (slopes at t_c of fits to the
-trajectory at 0.02 d ≤ gap ≤ 1 d), e_eff = −v_out/v_in, the peaks of the rebounds (gap/d and
+contact t_c, the impact velocity v_in and rebound velocity v_out (slopes of fits to the
+trajectory at 0.02 d ≤ gap ≤ 1 d, at t_c and at the separation, when the gap opens again; the
+rebound's slope at t_c is printed as well), e_eff = −v_out/v_in, the peaks of the rebounds (gap/d and
 t − t_c); for a run also |w| at the touch and at the separation and their ratio (the contact
 model with the lubrication correction alone), the impulses of the contact, lubrication and
 resolved forces over that contact and the lubrication's work there, the largest overlap, and the RMS of gap/d at the
@@ -26,7 +27,8 @@ def _number(x, fmt):
 
 def describe(name, r):
     peaks = ", ".join(f"{g:.3f} at {t * 1e3:.1f} ms" for t, g in r["peaks"]) or "none"
-    print(f"  {name:9s} v_in {_number(r['v_in'], '.4f')} m/s, v_out {_number(r['v_out'], '.4f')} m/s, "
+    print(f"  {name:9s} v_in {_number(r['v_in'], '.4f')} m/s, v_out {_number(r['v_out'], '.4f')} m/s "
+          f"(at t_c {_number(r.get('v_out_at_touch'), '.4f')}), "
           f"e_eff {_number(r['e_eff'], '.3f')}; peaks (gap/d at t − t_c): {peaks}")
 
 

@@ -6,7 +6,8 @@
 Each RUN_DIR is a rebound run (cases/validation/gondret_rebound_st152 or _st27, possibly with
 fluid.viscosity changed). For each run: the impact speed v_in and the
 rebound speed v_out, measured from the trajectory as on Gondret's data (python/fddem/rebound.py:
-slopes at the first contact of fits to 0.02 d ≤ gap ≤ 1 d), e_eff = −v_out/v_in, the contact's
+slopes of fits to 0.02 d ≤ gap ≤ 1 d at the first contact and, for v_out, at the separation,
+where the experiments' microsecond contact has t_s = t_c), e_eff = −v_out/v_in, the contact's
 own ratio of speeds (touch to separation), and St = ρp v_in d / (9 μ) with the run's ρp, d and
 μ. Printed as a table; with -o, e_eff/e_dry against St over the fit of Legendre, Zenit, Daniel &
 Guiraud (2006), e/e_dry = exp(−35/St) (cases/validation/rebound_stokes/legendre2006_fit.md), and

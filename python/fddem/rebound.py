@@ -11,10 +11,17 @@ Everything is measured the same way on the run and on the digitised data, from t
 - **peaks**: the maxima of the gap between successive bounces (a hysteresis of `prominence` d
   keeps noise from counting as a bounce), each refined by the parabola through the highest
   sample and its two neighbours (a 2 ms sampling would otherwise clip a peak).
-- **impact and rebound velocities** v_in, v_out: the slope at t_c of a polynomial (degree 2, or
-  1 with two samples) fitted to the samples of the approach, respectively of the first rebound,
-  whose gap lies in `FIT_WINDOW` (0.02 d to 1 d): the trajectory just outside the film, as an
-  experiment measures it, extended to the contact.
+- **impact and rebound velocities** v_in, v_out: the slope of a polynomial (degree 2, or 1 with
+  two samples) fitted to the samples of the approach, respectively of the first rebound, whose
+  gap lies in `FIT_WINDOW` (0.02 d to 1 d): the trajectory just outside the film, as an
+  experiment measures it, extended to the contact. v_in is the slope at the touch t_c, v_out at
+  the separation t_s, when the gap opens again (separation_time). In the experiments the contact
+  lasts microseconds and t_s = t_c; a run's collision lasts several fluid steps (the adaptive
+  model stretches it to contact.collision_steps Δt, 1-4 ms in the rebound cases), and the rebound
+  extended back to t_c across it would add the deceleration of the free flight times that
+  duration to v_out (thirty-third session: +0.025 m/s, +4.6 %, on the sweep's St 431 point;
+  docs/method.md §5, "The rebound measured at the separation"). Until then v_out was taken at
+  t_c; that value is kept as v_out_at_touch.
 - **e_eff = −v_out / v_in**, the effective restitution of the first bounce: what Gondret et al.
   and Joseph et al. (2001) call e, the ratio of the velocities just after and just before the
   contact, read from the trajectory (and what Legendre et al. 2006 fit as e_dry exp(−35/St)).
@@ -115,10 +122,26 @@ def peaks(t, gap, t_start, prominence=0.02):
     return found
 
 
-def fitted_velocity(t, gap, t_c, side, window=FIT_WINDOW, until=None):
-    """d(gap)/dt at t_c from the samples on `side` ("before" or "after" t_c) with gap within
-    `window`, back to the previous maximum (before) or up to `until` (after): polynomial of
-    degree 2 (1 with two samples) in t − t_c. Gap in the unit of the result's length; None
+def separation_time(t, gap, t_c):
+    """When the gap opens again after the touch t_c: its zero, interpolated linearly between the
+    last sample at or below 0 and the next one above. t_c itself when no sample after t_c is at
+    or below 0 (a contact shorter than the sampling, as in the digitised data); None when the gap
+    never opens again."""
+    t, gap = np.asarray(t, dtype=float), np.asarray(gap, dtype=float)
+    after = np.flatnonzero(t > t_c)
+    if not after.size or gap[after[0]] > 0.0:
+        return float(t_c)
+    open_again = after[gap[after] > 0.0]
+    if not open_again.size:
+        return None
+    k = open_again[0]
+    return float(t[k - 1] + (t[k] - t[k - 1]) * -gap[k - 1] / (gap[k] - gap[k - 1]))
+
+
+def fitted_velocity(t, gap, t_c, side, window=FIT_WINDOW, until=None, at=None):
+    """d(gap)/dt at t_c (or at `at`) from the samples on `side` ("before" or "after" t_c) with gap
+    within `window`, back to the previous maximum (before) or up to `until` (after): polynomial
+    of degree 2 (1 with two samples) in t − t_c. Gap in the unit of the result's length; None
     with fewer than two samples."""
     t, gap = np.asarray(t, dtype=float), np.asarray(gap, dtype=float)
     inside = (gap >= window[0]) & (gap <= window[1])
@@ -147,7 +170,7 @@ def fitted_velocity(t, gap, t_c, side, window=FIT_WINDOW, until=None):
         return None
     degree = min(2, keep.size - 1)
     coeffs = np.polyfit(t[keep] - t_c, gap[keep], degree)
-    return float(np.polyval(np.polyder(coeffs), 0.0))
+    return float(np.polyval(np.polyder(coeffs), 0.0 if at is None else at - t_c))
 
 
 def measure(t, gap, t_c=None, diameter=1.0):
@@ -159,11 +182,15 @@ def measure(t, gap, t_c=None, diameter=1.0):
     if t_c is None:
         raise ValueError("no contact: the gap never reaches 0 nor turns back from the wall")
     found = peaks(t, gap, t_c)
+    t_s = separation_time(t, gap, t_c)
+    until = found[0][0] if found else None
     v_in = fitted_velocity(t, gap, t_c, "before")
-    v_out = fitted_velocity(t, gap, t_c, "after", until=found[0][0] if found else None)
-    result = {"t_contact": t_c, "peaks": [(tp - t_c, gp) for tp, gp in found],
+    v_out = None if t_s is None else fitted_velocity(t, gap, t_c, "after", until=until, at=t_s)
+    v_out_at_touch = fitted_velocity(t, gap, t_c, "after", until=until)
+    result = {"t_contact": t_c, "t_separation": t_s, "peaks": [(tp - t_c, gp) for tp, gp in found],
               "v_in": None if v_in is None else v_in * diameter,
-              "v_out": None if v_out is None else v_out * diameter}
+              "v_out": None if v_out is None else v_out * diameter,
+              "v_out_at_touch": None if v_out_at_touch is None else v_out_at_touch * diameter}
     result["e_eff"] = (-v_out / v_in) if (v_in and v_out is not None) else None
     return result
 
@@ -364,7 +391,8 @@ def restitution(run_dir):
     except ValueError:  # never at the wall: no contact, no rebound
         near = np.flatnonzero(gap <= FIT_WINDOW[1])
         k = int(near[0]) if near.size else int(np.argmin(gap))
-        result = {"t_contact": None, "peaks": [], "v_in": None, "v_out": None, "e_eff": None,
+        result = {"t_contact": None, "t_separation": None, "peaks": [], "v_in": None,
+                  "v_out": None, "v_out_at_touch": None, "e_eff": None,
                   "touch": float(-w[k]), "separation": None, "e_contact": None}
     else:
         result.update(touch_speeds(t, gap, w, result["t_contact"]))

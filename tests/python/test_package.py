@@ -951,6 +951,34 @@ class Rebound(unittest.TestCase):
             self.assertAlmostEqual(gp, speeds[n]**2 / (2 * self.G) / self.D, delta=1e-6)
             self.assertAlmostEqual(tp, starts[n - 1] - 0.0123 + speeds[n] / self.G, delta=1e-6)
 
+    def test_a_contact_that_lasts_is_measured_at_the_separation(self):
+        # The same bounce, but the ball held on the floor (overlapping by 1e-3 d) for T = 2 ms
+        # before it leaves at E V, as a run's stretched collision: v_out is E V at the
+        # separation; the rebound's parabola extended back to the touch would give E V + g T.
+        t_c, hold, dt = 0.0123, 0.002, 1e-4
+        t = np.arange(0.0, t_c + hold + 2 * self.E * self.V_IN / self.G, dt)
+        gap, w = np.empty_like(t), np.empty_like(t)
+        for k, tk in enumerate(t):
+            if tk < t_c:
+                tau = t_c - tk
+                gap[k], w[k] = self.V_IN * tau - 0.5 * self.G * tau**2, -self.V_IN + self.G * tau
+            elif tk < t_c + hold:
+                gap[k], w[k] = -1e-3 * self.D, 0.0
+            else:
+                s = tk - t_c - hold
+                up = self.E * self.V_IN
+                gap[k], w[k] = up * s - 0.5 * self.G * s**2, up - self.G * s
+        r = rebound.measure(t, gap / self.D, diameter=self.D)
+        self.assertAlmostEqual(r["t_contact"], t_c, delta=1e-5)
+        # the zero between the last held sample and the next: within a sample of t_c + T
+        self.assertAlmostEqual(r["t_separation"], t_c + hold, delta=dt)
+        self.assertAlmostEqual(r["v_out"], self.E * self.V_IN, delta=1e-3)
+        self.assertAlmostEqual(r["v_out_at_touch"], self.E * self.V_IN + self.G * hold, delta=1e-3)
+        self.assertAlmostEqual(r["e_eff"], self.E, delta=2e-3)
+        # An instantaneous contact (no sample at or below 0 after it): the separation is t_c.
+        t, gap, _, _, _ = self.ballistic()
+        self.assertEqual(rebound.separation_time(t, gap, 0.0123), 0.0123)
+
     def test_a_sampled_contact_that_never_reaches_zero_is_extrapolated(self):
         # The same ball sampled every 2 ms, as the digitised data: the zero of the approach line.
         t, gap, _, _, _ = self.ballistic(t_contact=0.0131, dt=2e-3)
