@@ -6,8 +6,8 @@
 For each run (cases/validation/gondret_rebound_st152, ..._st27) and for the digitised data
 (cases/validation/rebound_stokes/), measured the same way (python/fddem/rebound.py): the first
 contact t_c, the impact velocity v_in and rebound velocity v_out (slopes of fits to the
-trajectory at 0.02 d ≤ gap ≤ 1 d, at t_c and at the separation, when the gap opens again; the
-rebound's slope at t_c is printed as well), e_eff = −v_out/v_in, the peaks of the rebounds (gap/d and
+trajectory at 0.02 d ≤ gap ≤ 1 d: v_in at t_c, v_out at the separation, when the gap opens
+again; the rebound's slope at t_c is printed as well), e_eff = −v_out/v_in, the peaks of the rebounds (gap/d and
 t − t_c); for a run also |w| at the touch and at the separation and their ratio (the contact
 model with the lubrication correction alone), the impulses of the contact, lubrication and
 resolved forces over that contact and the lubrication's work there, the largest overlap, and the RMS of gap/d at the

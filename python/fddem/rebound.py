@@ -19,7 +19,7 @@ Everything is measured the same way on the run and on the digitised data, from t
   lasts microseconds and t_s = t_c; a run's collision lasts several fluid steps (the adaptive
   model stretches it to contact.collision_steps Δt, 1-4 ms in the rebound cases), and the rebound
   extended back to t_c across it would add the deceleration of the free flight times that
-  duration to v_out (thirty-third session: +0.025 m/s, +4.6 %, on the sweep's St 431 point;
+  duration to v_out (thirty-third session: +0.023 m/s, +4.5 %, on the sweep's St 467 point;
   docs/method.md §5, "The rebound measured at the separation"). Until then v_out was taken at
   t_c; that value is kept as v_out_at_touch.
 - **e_eff = −v_out / v_in**, the effective restitution of the first bounce: what Gondret et al.
