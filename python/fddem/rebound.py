@@ -17,7 +17,7 @@ Everything is measured the same way on the run and on the digitised data, from t
   experiment measures it, extended to the contact. v_in is the slope at the touch t_c, v_out at
   the separation t_s, when the gap opens again (separation_time). In the experiments the contact
   lasts microseconds and t_s = t_c; a run's collision lasts several fluid steps (the adaptive
-  model stretches it to contact.collision_steps Δt, 1-4 ms in the rebound cases), and the rebound
+  model stretches it to contact.collision_steps Δt, 0.5-4 ms in the rebound cases), and the rebound
   extended back to t_c across it would add the deceleration of the free flight times that
   duration to v_out (thirty-third session: +0.023 m/s, +4.5 %, on the sweep's St 467 point;
   docs/method.md §5, "The rebound measured at the separation"). Until then v_out was taken at
