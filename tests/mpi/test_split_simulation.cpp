@@ -96,10 +96,12 @@ void expect_split_case_matches(const char* file, const char* name,
         contact_steps_split += report.contacts > 0 ? 1 : 0;
         worst_body =
             std::max(worst_body, test::body_difference<Dim>(split.bodies(), whole.bodies()));
-        // Every rank computes the gains itself (coupling/forcing_gain.hpp): bit for bit the
-        // one-process ones, after every placement of the markers, for the bodies it owns or
-        // holds markers of (no other rank's gains are read).
-        ASSERT_LE(test::gain_difference<Dim>(split.bodies(), whole.bodies(), split.grid()), 1e-14)
+        // Every rank computes the gains itself (coupling/forcing_gain.hpp): the one-process ones
+        // to round-off, after every placement of the markers, for the bodies it owns or holds
+        // markers of (no other rank's gains are read). They follow the centres, which agree to
+        // round-off, not bit for bit: 1.07e-14 on 4 ranks at step 5 of the soak's options with
+        // coupling.markers_off_between_bodies (below 1e-14 without it).
+        ASSERT_LE(test::gain_difference<Dim>(split.bodies(), whole.bodies(), split.grid()), 1e-13)
             << "step " << steps;
         owner_changes += count_owner_changes(split, owners);
         const auto [worst, largest] = test::compare_owned<Dim>(world, split.grid().owned_cells(),
@@ -300,8 +302,11 @@ TEST(SplitSimulation, SpheresCollidingWithTheSoaksOptionsMatchOneProcess)
     // up to 5.5e-7 relative, mixing off (as here) by 1.9e-12, and mixing on with the weights
     // rounded (simple.acceleration_weight_bits = 12) by 2.3e-13: the mixing's amplification of
     // round-off (docs/parallel.md, "Anderson mixing and the same answer"), not the gains.
+    // coupling.markers_off_between_bodies (since the thirty-third session): the midplanes of
+    // the colliding spheres, computed by every rank from the same centres.
     const std::vector<std::string> options = {"coupling.normalised_forcing=true",
-                                              "contact.fluid_force=always"};
+                                              "contact.fluid_force=always",
+                                              "coupling.markers_off_between_bodies=true"};
     {
         // The gains act: some marker's row sum exceeds 1, so its correction is divided.
         const Simulation<3> sim(read_case(case_path("spheres.toml"), options));
