@@ -14,8 +14,8 @@
 /// them, each holding them to its own motion: the constraints conflict outright. The rule here
 /// is the wall's, with the midplane as the wall: a marker is off when it lies closer to the
 /// plane midway between its body's surface and the other's than the reach. For unequal bodies
-/// or speeds the midplane is not a symmetry plane; it is still where the film is thinnest on
-/// either side, and the rule is the same.
+/// or speeds the midplane is not a symmetry plane; it still bisects the gap on the line of
+/// centres, and the same rule is used (not measured on such a pair).
 ///
 /// Balls only (the one shape fddem has): the gap and the normal come from the two centres.
 

@@ -41,8 +41,10 @@ TEST(BodyMidplanes, LieHalfWayAcrossTheGapFacingTheNeighbour)
     EXPECT_NEAR(planes[0][0].reach, 0.15, 1e-15);
     EXPECT_NEAR((planes[1][0].normal + n).norm(), 0.0, 1e-15);
     EXPECT_NEAR(planes[1][0].distance, 0.375, 1e-15);
-    // The two planes are the same plane: a's centre + 0.625 n is b's centre − 0.375 n.
-    EXPECT_NEAR((a + 0.625 * n - (a + n - 0.375 * n)).norm(), 0.0, 1e-15);
+    // The two planes are the same plane: the foot of each on its line of centres is one point.
+    const Vec<3> foot_a = a + planes[0][0].distance * planes[0][0].normal;
+    const Vec<3> foot_b = (a + n) + planes[1][0].distance * planes[1][0].normal;
+    EXPECT_NEAR((foot_a - foot_b).norm(), 0.0, 1e-15);
     // A gap of twice the reach or more has no plane: with 1.2 cells the reach is 0.12, with 1.3
     // 0.13, against half the gap 0.125.
     EXPECT_TRUE(body_midplanes<3>(bodies, box, spacing, 1.2)[0].empty());
