@@ -8,7 +8,7 @@ For each run (cases/validation/gondret_rebound_st152, ..._st27) and for the digi
 contact t_c, the impact velocity v_in and rebound velocity v_out (slopes of fits to the
 trajectory at 0.02 d ≤ gap ≤ 1 d: v_in at t_c, v_out at the separation, when the gap opens
 again; the rebound's slope at t_c is printed as well), e_eff = −v_out/v_in, the peaks of the rebounds (gap/d and
-t − t_c); for a run also |w| at the touch and at the separation and their ratio (the contact
+t − t_c) and the mean deceleration of the rise from the separation to the first peak; for a run also |w| at the touch and at the separation and their ratio (the contact
 model with the lubrication correction alone), the impulses of the contact, lubrication and
 resolved forces over that contact and the lubrication's work there, the largest overlap, and the RMS of gap/d at the
 data's times. With -o, gap/d against t − t_c of every run over the data.
@@ -29,7 +29,8 @@ def describe(name, r):
     peaks = ", ".join(f"{g:.3f} at {t * 1e3:.1f} ms" for t, g in r["peaks"]) or "none"
     print(f"  {name:9s} v_in {_number(r['v_in'], '.4f')} m/s, v_out {_number(r['v_out'], '.4f')} m/s "
           f"(at t_c {_number(r.get('v_out_at_touch'), '.4f')}), "
-          f"e_eff {_number(r['e_eff'], '.3f')}; peaks (gap/d at t − t_c): {peaks}")
+          f"e_eff {_number(r['e_eff'], '.3f')}; peaks (gap/d at t − t_c): {peaks}; "
+          f"rise deceleration {_number(r.get('rise_deceleration'), '.2f')} m/s²")
 
 
 def main():

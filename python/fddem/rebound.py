@@ -22,6 +22,12 @@ Everything is measured the same way on the run and on the digitised data, from t
   duration to v_out (thirty-third session: +0.023 m/s, +4.5 %, on the sweep's St 467 point;
   docs/method.md §5, "The rebound measured at the separation"). Until then v_out was taken at
   t_c; that value is kept as v_out_at_touch.
+- **rise deceleration** a_rise = v_out / (t_peak − t_s), the mean deceleration of the free rise
+  from the separation to the first peak (m/s²; g for a ball in vacuum): the buoyant weight, the
+  drag and the wake's push, with the added mass, over the flight after the contact. It separates
+  a peak that is off because the sphere leaves the wall at the wrong speed from one that is off
+  because its rise is braked wrongly (thirty-fourth session, docs/method.md §5, "The rise after
+  the rebound against the resolution").
 - **e_eff = −v_out / v_in**, the effective restitution of the first bounce: what Gondret et al.
   and Joseph et al. (2001) call e, the ratio of the velocities just after and just before the
   contact, read from the trajectory (and what Legendre et al. 2006 fit as e_dry exp(−35/St)).
@@ -192,6 +198,9 @@ def measure(t, gap, t_c=None, diameter=1.0):
               "v_out": None if v_out is None else v_out * diameter,
               "v_out_at_touch": None if v_out_at_touch is None else v_out_at_touch * diameter}
     result["e_eff"] = (-v_out / v_in) if (v_in and v_out is not None) else None
+    result["rise_deceleration"] = None
+    if v_out is not None and found and found[0][0] > t_s:
+        result["rise_deceleration"] = result["v_out"] / (found[0][0] - t_s)
     return result
 
 

@@ -981,6 +981,9 @@ class Rebound(unittest.TestCase):
                                self.E * self.V_IN + self.G * (t_c + hold - r["t_contact"]),
                                delta=1e-4)
         self.assertAlmostEqual(r["e_eff"], self.E, delta=3e-3)
+        # The rise from the separation to the peak in vacuum: v_out / (E V / g) = g, within the
+        # separation's sample (1e-4 s of a 0.041 s rise) and v_out's 1e-3 m/s: 0.05 m/s².
+        self.assertAlmostEqual(r["rise_deceleration"], self.G, delta=0.05)
         # An instantaneous contact (no sample at or below 0 after it): the separation is t_c.
         t0, gap0, _, _, _ = self.ballistic()
         self.assertEqual(rebound.separation_time(t0, gap0, 0.0123), 0.0123)
