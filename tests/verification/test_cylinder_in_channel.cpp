@@ -52,7 +52,7 @@ TEST(CylinderInChannel, TheSurfaceRingWithTheRomaKernelMeetsTheDragAtD20)
     // Issue 13's 2D-1 target, C_D within 2 % of 5.58 at D/20, with one ring of markers h apart
     // 0.3 h inside the surface (Uhlmann 2005's spacing, Breugem 2012's retraction) and the
     // three-point kernel of Roma, Peskin & Berger (1999) that both used. With the hat kernel
-    // the same ring gives 5.507 (−1.3 %) and the default layout 5.321 (docs/method.md §4, "The
+    // the same ring gives 5.496 (−1.5 %) and the default layout 5.321 (docs/method.md §4, "The
     // surface ring's kernel at D/20"). Measured: C_D 5.581 at t = 20; L_a 0.0826 (−2.5 %). Not
     // a check: Δp between the front and back points of the surface is 0.078 (−34 %) with either
     // kernel's ring (hat 0.076), where the default layout gives 0.116: with no markers inside,
