@@ -132,7 +132,8 @@ TEST(CouplingOptions, SurfaceMarkersHoldAFixedBodyAndRefuseAFreeOneWithoutTheCel
     EXPECT_LT(defects[1], 2.0 * defects[0]);
 }
 
-/// The Fig. 5 disk at h = 1/32 (d = 8 h), lubrication on, released at rest with its centre at
+/// The Fig. 5 disk at h = 1/32 (d = 8 h), lubrication on through the DEM (lubrication.coupling =
+/// "dem", the coupling that holds the fluid force), released at rest with its centre at
 /// x = `x` (0.15: 0.8 h from the side wall; 1.0: the middle), `fluid_force` for
 /// contact.fluid_force, and no velocity damping (the case's β = 2 stands in for the drag that
 /// "none" leaves out); its downward speed after 0.2 s (40 steps).
@@ -140,11 +141,11 @@ double settling_speed_beside_a_wall(double x, const char* fluid_force)
 {
     const std::string fig05 =
         std::string(FDDEM_SOURCE_DIR) + "/cases/paper/fig05_disk_in_box/case.toml";
-    Simulation<2> sim(
-        read_case(fig05, {"domain.cells=[64,192]", "time.end=0.2", "bodies.1.n_rings=0",
-                          "lubrication.enabled=true", "contact.velocity_damping=0",
-                          "bodies.1.position=[" + std::to_string(x) + ",4.0]",
-                          std::string("contact.fluid_force=") + fluid_force}));
+    Simulation<2> sim(read_case(fig05, {"domain.cells=[64,192]", "time.end=0.2",
+                                        "bodies.1.n_rings=0", "lubrication.enabled=true",
+                                        "lubrication.coupling=dem", "contact.velocity_damping=0",
+                                        "bodies.1.position=[" + std::to_string(x) + ",4.0]",
+                                        std::string("contact.fluid_force=") + fluid_force}));
     while (!sim.is_finished(sim.advance())) {
     }
     return -sim.bodies()[0].velocity.y();
@@ -155,8 +156,8 @@ TEST(CouplingOptions, ADiskBesideAWallWithinTheLubricationRangeFeelsTheFluid)
     // With lubrication on, the paper coupling gives a body within the lubrication range (2 h)
     // of a wall to the DEM, step after step. Without the resolved fluid force in the sub-steps
     // (contact.fluid_force = "none") the disk beside the wall falls at its buoyant weight alone,
-    // faster than in the middle of the box; with it ("auto", the default with lubrication, and
-    // "held") the wall slows it, as it must. The soak of 200 spheres blew up on the first.
+    // faster than in the middle of the box; with it ("auto", the default with lubrication "dem",
+    // and "held") the wall slows it, as it must. The soak of 200 spheres blew up on the first.
     const double middle = settling_speed_beside_a_wall(1.0, "auto");
     const double beside = settling_speed_beside_a_wall(0.15, "auto");
     const double dropped = settling_speed_beside_a_wall(0.15, "none");

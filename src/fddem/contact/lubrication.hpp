@@ -69,13 +69,15 @@ enum class LubricationResolved {
 /// (lubrication.coupling).
 enum class LubricationCoupling {
     /// the body counts as in contact within the range: with the paper's coupling the DEM moves
-    /// it, and the correction acts implicitly in the sub-steps (fddem's first coupling)
+    /// it, and the correction acts implicitly in the sub-steps (fddem's first coupling; the
+    /// default until the thirty-sixth session: a light body beside another goes unstable under
+    /// it, docs/method.md §5, "The default coupling of the film")
     dem,
     /// the body stays on eqs. (13)–(14), with the correction's damping on their left-hand sides
     /// and the bodies it joins solved together: the fluid's added mass and the film act together
     /// (coupling/lubrication_coupling.hpp); a body leaving a collision (its gap opening within
     /// the range after a touch) is the DEM's until it is out of the range, as with `dem` but
-    /// without the held fluid force
+    /// without the held fluid force (the default)
     implicit,
 };
 
@@ -85,9 +87,9 @@ struct LubricationSettings {
     double viscosity = 0.0;  ///< μ [Pa·s]
     double range = 0.0;      ///< activation gap h_Δ [m] (the case gives it in grid spacings)
     double roughness = 1e-3; ///< h_σ as a fraction of the smaller radius
-    LubricationInContact in_contact = LubricationInContact::off; ///< while overlapping
-    LubricationResolved resolved = LubricationResolved::range;   ///< what the grid resolves
-    LubricationCoupling coupling = LubricationCoupling::dem;     ///< bodies not in contact
+    LubricationInContact in_contact = LubricationInContact::off;  ///< while overlapping
+    LubricationResolved resolved = LubricationResolved::range;    ///< what the grid resolves
+    LubricationCoupling coupling = LubricationCoupling::implicit; ///< bodies not in contact
 };
 
 /// Resistance coefficients of one gap [N·s/m] (2D: per unit length).

@@ -352,6 +352,9 @@ DemSettings lubricated(double viscosity, double range, int substeps)
 {
     DemSettings settings{LinearSpringDashpot({1e3, 0.0}, 1.0), 0.0, substeps};
     settings.lubrication = {true, viscosity, range, 1e-3};
+    // the film in the DEM's sub-steps, which these tests check (the default, "implicit", puts a
+    // body within the range on eqs. (13)–(14) instead: LubricationCoupling)
+    settings.lubrication.coupling = LubricationCoupling::dem;
     return settings;
 }
 
@@ -437,7 +440,8 @@ void check_stiff_approach()
 TEST(Lubrication, BodiesWithinRangeCountAsInContact)
 {
     // A sphere 1 mm above the floor, range 2 mm: moved by the DEM for the step (paper coupling)
-    // with lubrication on; untouched, as before, with it off.
+    // with lubrication on through the DEM (lubrication.coupling = "dem"); untouched, as
+    // before, with it off.
     const double a = 0.01;
     for (const bool is_on : {true, false}) {
         std::vector<Particle<3>> bodies{
@@ -455,6 +459,21 @@ TEST(Lubrication, BodiesWithinRangeCountAsInContact)
         EXPECT_EQ(bodies[0].contact.lubrication_force, bodies[0].contact.mean_force);
         EXPECT_EQ(bodies[0].contact.lubrication_torque, bodies[0].contact.mean_torque);
     }
+    // The default coupling ("implicit") leaves the same sphere to eqs. (13)–(14): not in
+    // contact, and one link to the floor with the correction for them (the sub-steps' film
+    // force is then dropped by the step: drop_substep_lubrication).
+    std::vector<Particle<3>> bodies{
+        test::ball<3>(Vec<3>(0.05, 0.05, a + 1e-3), Vec<3>(0.0, 0.0, -0.001), a, 2000.0)};
+    const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
+    DemSettings settings = lubricated(1.0, 0.002, 10);
+    settings.lubrication.coupling = LubricationSettings{}.coupling;
+    EXPECT_EQ(settings.lubrication.coupling, LubricationCoupling::implicit);
+    CellList<3> cells(floor.origin, floor.length, 0.03);
+    ContactHistory<3> history;
+    test::step_dem<3>(bodies, floor, settings, 1e-3, cells, history);
+    EXPECT_FALSE(bodies[0].contact.is_in_contact);
+    ASSERT_EQ(bodies[0].contact.lubrication_links.size(), 1U);
+    EXPECT_GT(bodies[0].contact.lubrication_links[0].resistance.normal, 0.0);
 }
 
 TEST(Lubrication, DryAndLubricationForcesAreReportedApart)

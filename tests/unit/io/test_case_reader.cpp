@@ -65,7 +65,7 @@ TEST(CaseReader, ValidCaseReadsWithDefaultsFilledIn)
     EXPECT_FALSE(c.lubrication.is_enabled);
     EXPECT_EQ(name_of(c.lubrication.in_contact), "off"); // the schema's documented default
     EXPECT_EQ(name_of(c.lubrication.resolved), "range");
-    EXPECT_EQ(name_of(c.lubrication.coupling), "dem");
+    EXPECT_EQ(name_of(c.lubrication.coupling), "implicit");
     EXPECT_EQ(c.simple.min_outer_iterations_dem, 2); // the schema's documented defaults
     EXPECT_FALSE(c.simple.is_mass_residual_held);
     EXPECT_TRUE(c.coupling.is_adjoint_at_walls);
