@@ -777,19 +777,20 @@ std::vector<KeySpec> case_schema()
                           "retraction for the retracted layout; with it a range of several h, "
                           "e.g. 8; docs/method.md §5, \"What the grid resolves\")."),
                       &CaseConfig::lubrication, &LubricationConfig::resolved));
-    s.push_back(bound(key("lubrication", "coupling", T::string, none, "\"implicit\"",
-                          "How the correction reaches a body within lubrication.range that is "
-                          "not in contact: implicit (it stays on eqs. (13)–(14), the correction's "
-                          "damping on their left-hand side, the bodies the film joins solved "
-                          "together; the DEM takes over within contact.margin, and while a body "
-                          "leaves a collision within the range; docs/method.md §5, \"Implicit "
-                          "coupling of the film\") or dem (it counts as in contact, so with the "
-                          "paper's coupling the DEM sub-steps move it, with the resolved force "
-                          "of the step before held; a light body beside another then goes "
-                          "unstable: the paper's eighteen disks blow up at t = 0.13 s; the "
-                          "default until 2026-12-02, kept by the cases measured with it; §5, "
-                          "\"The default coupling of the film\")."),
-                      &CaseConfig::lubrication, &LubricationConfig::coupling));
+    s.push_back(
+        bound(key("lubrication", "coupling", T::string, none, "\"implicit\"",
+                  "How the correction reaches a body within lubrication.range that is "
+                  "not in contact: implicit (it stays on eqs. (13)–(14), the correction's "
+                  "damping on their left-hand side, the bodies the film joins solved "
+                  "together; the DEM takes over within contact.margin, and while a body "
+                  "leaves a collision within the range; docs/method.md §5, \"Implicit "
+                  "coupling of the film\") or dem (it counts as in contact, so with the "
+                  "paper's coupling the DEM sub-steps move it, with the resolved force "
+                  "of the step before held; a light body beside another then goes "
+                  "unstable: the paper's eighteen disks blow up in the step to t = 0.135 s; the "
+                  "default until 2026-12-02, kept by the cases measured with it; §5, "
+                  "\"The default coupling of the film\")."),
+              &CaseConfig::lubrication, &LubricationConfig::coupling));
 
     s.push_back(
         bound(positive(key("nondimensional", "reynolds", T::real, none, "none",

@@ -529,6 +529,7 @@ double wet_restitution(double restitution, double viscosity, LubricationInContac
     const int collision_steps = 1000;
     DemSettings settings{AdaptiveCollision({restitution, collision_steps, 1e-6, dt}), 0.0, 1};
     settings.lubrication = {true, viscosity, 7.5e-4, 1e-3, in_contact};
+    settings.lubrication.coupling = LubricationCoupling::dem; // the film in the sub-steps
     std::vector<Particle<Dim>> bodies{test::ball<Dim>(test::along<Dim>(Dim - 1, a + 1e-9, 0.01),
                                                       test::along<Dim>(Dim - 1, -v0), a, 7800.0)};
     std::array<bool, Dim> walled{};
@@ -647,6 +648,7 @@ double film_passage_in_the_dem(double dt)
     DemSettings settings{LinearSpringDashpot({1e-12, 0.0}, 1.0), 0.0,
                          8}; // no contact force to speak of
     settings.lubrication = {true, viscosity, 0.5 * a, 1e-3};
+    settings.lubrication.coupling = LubricationCoupling::dem; // the film in the sub-steps
     const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.02), {false, false, true});
     std::vector<Particle<3>> bodies{test::ball<3>(Vec<3>(0.01, 0.01, 1.5 * a * (1.0 - 1e-12)),
                                                   Vec<3>(0.0, 0.0, -v0), a, 7800.0)};
