@@ -34,6 +34,18 @@ double rim_speed(const Vec<Dim>& velocity, const AngularVec<Dim>& omega, double 
     return velocity.norm() + magnitude<Dim>(omega) * radius;
 }
 
+/// Whether the film links a free body in this step (lubrication.coupling = "implicit": the DEM
+/// records each free body's gaps within the range at the step's start, also for a body it moves
+/// this step, in contact or within contact.margin). The bodies and their links are the same on
+/// every rank (every rank runs the DEM on every body), so every rank decides alike.
+template <int Dim>
+bool is_any_free_body_film_linked(const Particles<Dim>& bodies)
+{
+    return std::any_of(bodies.begin(), bodies.end(), [](const Particle<Dim>& body) {
+        return body.is_free() && !body.contact.lubrication_links.empty();
+    });
+}
+
 std::span<double> flat(double& value)
 {
     return {&value, 1};
@@ -119,13 +131,12 @@ void OuterIterations<Dim>::iterate(const StepInputs<Dim>& in, FluidState<Dim>& s
                            grid_.spacing().minCoeff() / reference_velocity(grid_, bc_, state.u);
     mixing_.reset();
     // Only free bodies have velocities to measure (fixed and prescribed ones converge on λ).
-    // Not in a step in which the film joins a free body to another body or a wall
-    // (lubrication.coupling = "implicit"): the mixing weighs the iterates by the bodies'
-    // velocities alone, which the film's damping (on eqs. (13)–(14), or in the DEM's sub-steps
-    // for a body the DEM moves) holds nearly still whatever the fluid does, so the weights are
-    // no guide for u and p (a reading, not checked iteration by iteration). Measured: mixed, the
-    // eighteen disks' steps passed the bodies' test with the mass residual drifting up until the
-    // flow ran away at t ≈ 0.6 s (docs/method.md §5, "The default coupling of the film").
+    // Nor in a step in which the film links a free body: mixed, the eighteen disks' steps passed
+    // the bodies' test while the mass residual drifted up until the flow ran away at t ≈ 0.6 s.
+    // The mixing weighs the iterates by the bodies' velocities alone, which the film's damping
+    // holds nearly still whatever the fluid does (a reading, not checked iteration by iteration).
+    // Counting only the linked bodies eqs. (13)–(14) move was not enough (docs/method.md §5,
+    // "The default coupling of the film").
     is_mixing_ = mixing_.depth() > 0 && bodies.has_free_body() &&
                  !(is_lubrication_implicit_ && is_any_free_body_film_linked(bodies));
     const int fewest = fewest_iterations(bodies); // before the step's test may end it
@@ -301,20 +312,6 @@ void OuterIterations<Dim>::extrapolate_start(const StepInputs<Dim>& in, FluidSta
         }
     }
     fill_velocity_ghosts(grid_, bc_, state.u);
-}
-
-template <int Dim>
-bool OuterIterations<Dim>::is_any_free_body_film_linked(const Particles<Dim>& bodies) const
-{
-    // The film's links of the step, recorded by the DEM at its start for every free body within
-    // the range, also one the DEM moves this step (in contact or within contact.margin); the
-    // same on every rank (every rank runs the DEM on every body). Counting only the bodies
-    // eqs. (13)–(14) move left the eighteen disks' runs as unmixed ones went astray (mass
-    // residual 0.84 and Courant number 14 by t = 0.7 s: docs/method.md §5, "The default
-    // coupling of the film").
-    return std::any_of(bodies.begin(), bodies.end(), [](const Particle<Dim>& body) {
-        return body.is_free() && !body.contact.lubrication_links.empty();
-    });
 }
 
 template <int Dim>

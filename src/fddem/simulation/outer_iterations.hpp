@@ -129,8 +129,6 @@ private:
     /// Outer iterations a step takes before its test may end it: simple.min_outer_iterations_dem
     /// with a free body the DEM moves, else 1.
     [[nodiscard]] int fewest_iterations(const Particles<Dim>& bodies) const;
-    /// Whether the film links a free body this step (no mixing then).
-    [[nodiscard]] bool is_any_free_body_film_linked(const Particles<Dim>& bodies) const;
     /// simple.hold_mass_residual: with bodies, the mass residual `now` of outer iteration k is
     /// no larger than the step's `start` one (or below simple.tolerance), or no smaller than the
     /// `previous` iteration's.

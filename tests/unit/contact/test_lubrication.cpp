@@ -459,9 +459,14 @@ TEST(Lubrication, BodiesWithinRangeCountAsInContact)
         EXPECT_EQ(bodies[0].contact.lubrication_force, bodies[0].contact.mean_force);
         EXPECT_EQ(bodies[0].contact.lubrication_torque, bodies[0].contact.mean_torque);
     }
-    // The default coupling ("implicit") leaves the same sphere to eqs. (13)–(14): not in
-    // contact, and one link to the floor with the correction for them (the sub-steps' film
-    // force is then dropped by the step: drop_substep_lubrication).
+}
+
+TEST(Lubrication, UnderTheDefaultCouplingABodyWithinRangeIsLinkedNotInContact)
+{
+    // The default coupling ("implicit") leaves the sphere of the test above to eqs. (13)–(14):
+    // not in contact, and one link to the floor with the correction for them (the sub-steps'
+    // film force is then dropped by the step: drop_substep_lubrication).
+    const double a = 0.01;
     std::vector<Particle<3>> bodies{
         test::ball<3>(Vec<3>(0.05, 0.05, a + 1e-3), Vec<3>(0.0, 0.0, -0.001), a, 2000.0)};
     const DemWalls<3> floor = test::box<3>(Vec<3>::Constant(0.1), {false, false, true});
