@@ -529,7 +529,11 @@ std::vector<KeySpec> case_schema()
     s.push_back(bound(
         ranged(key("coupling", "marker_retraction", T::real, none, "0.3",
                    "With markers = \"retracted\" or \"surface\": how far inside the surface the "
-                   "outermost ring lies, in grid spacings h (0.3: Breugem 2012)."),
+                   "outermost ring lies, in grid spacings h (0.3: Breugem 2012). The value "
+                   "that gives the exact Stokes drag grows with the kernel's width (3D sphere, "
+                   "d/h 8: hat 0.24, roma3 0.43, roma3_smoothed 0.52, peskin4 0.62); "
+                   "tools/stokes_retraction.py measures it for a kernel and resolution "
+                   "(docs/method.md §4)."),
                0.0, 2.0, false, false),
         &CaseConfig::coupling, &CouplingConfig::marker_retraction));
     s.push_back(bound(key("coupling", "force_before_projection", T::boolean, none, "false",
