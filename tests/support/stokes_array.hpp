@@ -19,7 +19,7 @@ inline double sphere_array_k(double phi)
 }
 
 /// F / (μ U) per unit length of a square array of cylinders at area fraction φ (Sangani &
-/// Acrivos 1982, their dilute series).
+/// Acrivos 1982, Int. J. Multiphase Flow 8, 193; their dilute series).
 inline double cylinder_array_resistance(double phi)
 {
     return 4.0 * std::numbers::pi /

@@ -3,7 +3,8 @@
 // of fixed bodies (cases/verification/sphere_array_stokes, cylinder_array_stokes), whose mean
 // velocity for a given drive is Sangani & Acrivos (1982). The marker retraction that gives the
 // exact drag depends on the kernel (tools/stokes_retraction.py finds it; docs/method.md §4, "The
-// retraction from the Stokes drag"). These tests hold the values the docs give.
+// retraction from the Stokes drag"). These tests hold the docs' 2D row and the smoothed kernel's
+// 3D value.
 #include "fddem/grid/loops.hpp"
 #include "fddem/io/case_reader.hpp"
 #include "fddem/simulation/simulation.hpp"
@@ -60,7 +61,8 @@ TEST(StokesArrayRetraction, TheSmoothKernelsSphereNeedsHalfACellForTheExactDrag)
     // d/h = 8, φ = 0.019 (24³ cells; 10-15 s each). Measured: U / U_exact 0.9863 at 0.5 h (the
     // drag 1.4 % high) and 0.9130 at Breugem's 0.3 h (9.5 % high); tools/stokes_retraction.py
     // puts the crossing at 0.52 h. The hat kernel's sphere at 0.3 h gives 1.024 (its crossing
-    // 0.24 h): a wider kernel makes the same layout hydrodynamically larger.
+    // 0.24 h, between runs at 0.2 and 0.3 h): a wider kernel makes the same layout hydrodynamically
+    // larger.
     const double at_half =
         mean_velocity_over_exact<3>("sphere_array_stokes", {"coupling.kernel=roma3_smoothed",
                                                             "coupling.marker_retraction=0.5"});
