@@ -34,6 +34,7 @@ thread unless OMP_NUM_THREADS is set.
 import argparse
 import math
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -117,7 +118,9 @@ def main():
                         help="coupling.marker_retraction values to run, in h (0 to 2)")
     parser.add_argument("--fddem",
                         default=os.path.join(HERE, "..", "build", "release", "app", "fddem"))
-    parser.add_argument("--keep", default=None, help="a new directory to keep the runs in")
+    parser.add_argument("--keep", default=None,
+                        help="a new directory to keep the runs in (else they are removed, "
+                             "unless a run fails)")
     parser.add_argument("--set", action="append", default=[], dest="extra",
                         help="passed on to every fddem run (e.g. coupling.markers=surface)")
     args = parser.parse_args()
@@ -174,7 +177,7 @@ def main():
               f"{'–' if seconds is None else round(seconds, 1)} |", flush=True)
     print(f"φ = {phi:.4f}, U_exact = {exact:.6g} (Sangani & Acrivos 1982)")
     if not args.keep:
-        print(f"(runs in {work})")
+        shutil.rmtree(work, ignore_errors=True)
     root = crossing(rows)
     if root is None:
         print("U / U_exact does not cross 1 between these retractions: widen --retractions")
