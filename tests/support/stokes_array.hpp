@@ -3,6 +3,9 @@
 // large a diffuse body is (docs/method.md §4, "The retraction from the Stokes drag").
 #pragma once
 
+#include "fddem/grid/loops.hpp"
+#include "fddem/simulation/simulation.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -24,6 +27,18 @@ inline double cylinder_array_resistance(double phi)
 {
     return 4.0 * std::numbers::pi /
            (-0.5 * std::log(phi) - 0.738 + phi - 0.887 * phi * phi + 2.039 * phi * phi * phi);
+}
+
+/// The mean of u_x over a periodic box's x-faces: on a periodic grid the mean velocity over the
+/// cell, the fluid inside the body included (held at rest, as the exact problem's body is).
+template <int Dim>
+double mean_x_velocity(const Simulation<Dim>& sim)
+{
+    const MacGrid<Dim>& grid = sim.grid();
+    const double faces = static_cast<double>(grid.owned_faces(0).size());
+    return sum_over(grid.communicator(), grid.owned_faces(0),
+                    [&](const Index<Dim>& f) { return sim.fluid().u[0](f); }) /
+           faces;
 }
 
 } // namespace fddem::test

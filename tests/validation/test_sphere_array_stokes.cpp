@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The 3D coupling against an exact solution: Stokes flow through a simple cubic array of fixed
 // spheres, driven by a uniform force on the fluid.
-#include "fddem/grid/loops.hpp"
 #include "fddem/io/case_reader.hpp"
 #include "fddem/simulation/simulation.hpp"
 
@@ -46,11 +45,7 @@ end = 30.0
                                                "sphere_array.toml");
     Simulation<3> sim(config);
     test::run_to_end(sim);
-    const MacGrid<3>& grid = sim.grid();
-    const double cells = static_cast<double>(grid.owned_faces(0).size());
-    const double mean_u = sum_over(grid.communicator(), grid.owned_faces(0),
-                                   [&](const Index<3>& f) { return sim.fluid().u[0](f); }) /
-                          cells;
+    const double mean_u = test::mean_x_velocity(sim);
     const double pi = std::numbers::pi;
     const double phi = pi / 6.0 / 64.0;
     const double force = 0.01 * 64.0; // the whole cube's drive, held by the sphere
