@@ -40,10 +40,15 @@
 #     issue's strong-scaling rows on 1 and 2 ranks: the cube at 128³ (5 steps) and ten Cate E4
 #     at d/h = 15.75 (105 × 105 × 168 cells, 3 steps), and 200 spheres (the soak, 5 steps) with
 #     the sequential and the simultaneous sweep over the bodies (coupling.body_sweep).
+#  7b. with --mpi-memory [N]: the peak resident memory of every rank (GNU time's %M, per
+#     process), the lid-driven cube at N³ (default 96), 3 steps and the closing outputs (line
+#     samples, summary, a checkpoint), on one process and on 2 ranks: no rank should hold the
+#     whole grid (issue 15; before the thirty-eighth session rank 0 kept a one-process mirror).
 #  8. with --no-base: without the kernel and cavity tables (1-2), e.g. `--no-base --mpi 4`.
 # The kernel table includes contact detection (cell list vs brute force) for 1e3-1e5 disks.
 # Options: --openfoam [N] (default N = 256), --paper, --steady [R] (default R = 3 rounds),
-# --3d [full], --cube3d [R] (default R = 3 rounds), --mpi [P] (default P = 4), --mpi-large, --no-base, --quick (smaller table),
+# --3d [full], --cube3d [R] (default R = 3 rounds), --mpi [P] (default P = 4), --mpi-large,
+# --mpi-memory [N] (default N = 96), --no-base, --quick (smaller table),
 # --threads T (default 1).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -61,6 +66,8 @@ steady_rounds=3
 mpi=0
 mpi_ranks=4
 mpi_large=0
+mpi_memory=0
+mpi_memory_n=96
 base=1
 quick=0
 threads=1
@@ -74,6 +81,7 @@ while [ $# -gt 0 ]; do
         --steady) steady=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then steady_rounds="$2"; shift; fi ;;
         --mpi) mpi=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then mpi_ranks="$2"; shift; fi ;;
         --mpi-large) mpi=1; mpi_large=1 ;;
+        --mpi-memory) mpi_memory=1; if [[ "${2:-}" =~ ^[0-9]+$ ]]; then mpi_memory_n="$2"; shift; fi ;;
         --no-base) base=0 ;;
         --threads) threads="$2"; shift ;;
         *) echo "bench/run.sh: unknown option '$1'" >&2; exit 2 ;;
@@ -311,6 +319,24 @@ if [ "$mpi" = 1 ]; then
         done
     fi
     $python "$here/table.py" mpi "$(nproc --all)" "${rows[@]}"
+fi
+
+if [ "$mpi_memory" = 1 ]; then
+    echo
+    echo "== peak memory per rank, lid-driven cube ${mpi_memory_n}³, 3 steps and the closing outputs"
+    command -v /usr/bin/time >/dev/null || DEBIAN_FRONTEND=noninteractive apt-get install -y -qq time >/dev/null
+    launch=(mpirun --oversubscribe)
+    if [ "$(id -u)" = 0 ]; then launch+=(--allow-run-as-root); fi
+    cube=(docs/examples/cavity3d.toml --force -q --set time.max_steps=3 --set output.field_interval=0
+          --set "domain.cells=[$mpi_memory_n,$mpi_memory_n,$mpi_memory_n]" --set simple.pressure_solver=fft)
+    peaks=()
+    for p in 1 2; do
+        log="$out/mpi_memory_$p.log"
+        "${launch[@]}" -n "$p" /usr/bin/time -f "peak-kib %M" "$fddem" run "${cube[@]}" \
+            -o "$out/mpi_memory_$p" 2>"$log"
+        peaks+=("$p:$(grep -o 'peak-kib [0-9]*' "$log" | awk '{print $2}' | sort -n | tr '\n' ',')")
+    done
+    $python "$here/table.py" mpi_memory "$mpi_memory_n" "${peaks[@]}"
 fi
 
 if [ "$steady" = 1 ]; then

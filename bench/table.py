@@ -217,6 +217,23 @@ def mpi_table(cores, entries):
     mpi_model(entries, "weak_fft")
 
 
+def mpi_memory_table(n, *entries):
+    """Peak resident memory per process (ranks:kib,kib,…, GNU time's %M, in rank-independent
+    order) on one process and on several ranks."""
+    n = int(n)
+    print(f"{'ranks':>5} {'cells':>11} {'largest MiB':>11} {'smallest MiB':>12} "
+          f"{'largest/smallest':>16} {'sum MiB':>8} {'B/cell (sum)':>12}")
+    for entry in entries:
+        ranks, values = entry.split(":", 1)
+        kib = [int(v) for v in values.split(",") if v]
+        mib = [k / 1024 for k in kib]
+        print(f"{ranks:>5} {f'{n}^3':>11} {max(mib):>11.0f} {min(mib):>12.0f} "
+              f"{max(mib) / min(mib):>16.2f} {sum(mib):>8.0f} {sum(kib) * 1024 / n**3:>12.0f}")
+    print("  each process's peak resident memory over the whole run (the closing checkpoint "
+          "included); with no rank holding the whole grid, the ranks' peaks are alike and their "
+          "sum is near the one-process run's.")
+
+
 # The cluster the efficiency model assumes: one message's latency [s] and the link's bandwidth
 # [B/s]. Typical of InfiniBand EDR/HDR (about 1-2 µs, 10-25 GB/s); the pessimistic pair is an
 # Ethernet-like cluster.
@@ -503,7 +520,7 @@ def steady_table(steady_dir, peer_results, cases_dir):
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("mode", choices=["cavity", "openfoam", "ghia", "paper", "steady", "three_d",
-                                         "mpi", "cube3d"])
+                                         "mpi", "mpi_memory", "cube3d"])
     parser.add_argument("args", nargs="+")
     options = parser.parse_args()
     if options.mode == "cavity":
@@ -516,6 +533,8 @@ def main():
         three_d_table(options.args)
     elif options.mode == "mpi":
         mpi_table(options.args[0], options.args[1:])
+    elif options.mode == "mpi_memory":
+        mpi_memory_table(*options.args)
     elif options.mode == "steady":
         steady_table(*options.args)
     elif options.mode == "cube3d":

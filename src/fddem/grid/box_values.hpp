@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 /// The entries of a grid array over a box, as one contiguous buffer (x fastest), and back: what
-/// a message between ranks carries (grid/halo_exchange.cpp, grid/gather_storage.cpp).
+/// a message between ranks carries (grid/halo_exchange.cpp), and a checkpoint's piece
+/// (io/piece_archive.hpp).
 
 #include "fddem/grid/fields.hpp"
 #include "fddem/grid/loops.hpp"

@@ -60,16 +60,19 @@ double sample_cell_field(const MacGrid<Dim>& grid, const CellField<Dim>& phi, co
 }
 
 template <int Dim>
-std::vector<std::vector<double>> sample_line(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
-                                             const CellField<Dim>& p, const Vec<Dim>& from,
-                                             const Vec<Dim>& to, int n_points)
+std::vector<std::vector<double>>
+sample_line_owned(const MacGrid<Dim>& grid, const FaceField<Dim>& u, const CellField<Dim>& p,
+                  const Vec<Dim>& from, const Vec<Dim>& to, int n_points)
 {
     std::vector<std::vector<double>> rows;
     for (int k = 0; k < n_points; ++k) {
         const double s = n_points > 1 ? static_cast<double>(k) / (n_points - 1) : 0.0;
         const Vec<Dim> x = from + s * (to - from);
+        if (!grid.owns_point(x)) {
+            continue;
+        }
         const Vec<Dim> velocity = sample_velocity(grid, u, x);
-        std::vector<double> row;
+        std::vector<double> row{static_cast<double>(k)};
         for (int d = 0; d < Dim; ++d) {
             row.push_back(x[d]);
         }
@@ -78,6 +81,18 @@ std::vector<std::vector<double>> sample_line(const MacGrid<Dim>& grid, const Fac
         }
         row.push_back(sample_cell_field(grid, p, x));
         rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+template <int Dim>
+std::vector<std::vector<double>> sample_line(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
+                                             const CellField<Dim>& p, const Vec<Dim>& from,
+                                             const Vec<Dim>& to, int n_points)
+{
+    std::vector<std::vector<double>> rows = sample_line_owned(grid, u, p, from, to, n_points);
+    for (std::vector<double>& row : rows) {
+        row.erase(row.begin()); // the point's number
     }
     return rows;
 }
@@ -121,6 +136,14 @@ template std::vector<std::vector<double>> sample_line<2>(const MacGrid<2>&, cons
 template std::vector<std::vector<double>> sample_line<3>(const MacGrid<3>&, const FaceField<3>&,
                                                          const CellField<3>&, const Vec<3>&,
                                                          const Vec<3>&, int);
+template std::vector<std::vector<double>> sample_line_owned<2>(const MacGrid<2>&,
+                                                               const FaceField<2>&,
+                                                               const CellField<2>&, const Vec<2>&,
+                                                               const Vec<2>&, int);
+template std::vector<std::vector<double>> sample_line_owned<3>(const MacGrid<3>&,
+                                                               const FaceField<3>&,
+                                                               const CellField<3>&, const Vec<3>&,
+                                                               const Vec<3>&, int);
 template void cell_centred_velocity<2>(const MacGrid<2>&, const FaceField<2>&, int, CellField<2>&);
 template void cell_centred_velocity<3>(const MacGrid<3>&, const FaceField<3>&, int, CellField<3>&);
 template void cell_centred_vorticity<2>(const MacGrid<2>&, const FaceField<2>&, int, int,

@@ -20,11 +20,21 @@ template <int Dim>
 [[nodiscard]] double sample_cell_field(const MacGrid<Dim>& grid, const CellField<Dim>& phi,
                                        const Vec<Dim>& x);
 
-/// Rows (x, y[, z], u, v[, w], p) at n_points equally spaced points from `from` to `to`.
+/// Rows (x, y[, z], u, v[, w], p) at n_points equally spaced points from `from` to `to`, on
+/// one process.
 template <int Dim>
 [[nodiscard]] std::vector<std::vector<double>>
 sample_line(const MacGrid<Dim>& grid, const FaceField<Dim>& u, const CellField<Dim>& p,
             const Vec<Dim>& from, const Vec<Dim>& to, int n_points);
+
+/// The rows of sample_line at the points whose cell this process owns (MacGrid::owns_point;
+/// on a split grid each point has one owner, whose storage holds the interpolation's stencil),
+/// each row preceded by the point's number k (0 … n_points − 1). The ghosts of u and p next to
+/// the block must be filled.
+template <int Dim>
+[[nodiscard]] std::vector<std::vector<double>>
+sample_line_owned(const MacGrid<Dim>& grid, const FaceField<Dim>& u, const CellField<Dim>& p,
+                  const Vec<Dim>& from, const Vec<Dim>& to, int n_points);
 
 /// Velocity component `axis` at cell centres: the mean of the cell's two faces, on the cells
 /// this process owns (the ghosts of u read across a rank face must be filled).

@@ -11,13 +11,23 @@ namespace fddem {
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view content)
 {
+    write_file_atomically(path, std::span<const std::string_view>(&content, 1));
+}
+
+void write_file_atomically(const std::filesystem::path& path,
+                           std::span<const std::string_view> parts)
+{
     std::filesystem::path temporary = path;
     temporary += ".tmp." + std::to_string(::getpid());
     std::FILE* file = std::fopen(temporary.c_str(), "wb");
     if (file == nullptr) {
         throw OutputError("cannot write " + temporary.string());
     }
-    const bool is_written = std::fwrite(content.data(), 1, content.size(), file) == content.size();
+    bool is_written = true;
+    for (const std::string_view content : parts) {
+        is_written =
+            is_written && std::fwrite(content.data(), 1, content.size(), file) == content.size();
+    }
     const bool is_flushed = std::fflush(file) == 0 && ::fsync(::fileno(file)) == 0;
     const bool is_closed = std::fclose(file) == 0;
     if (!is_written || !is_flushed || !is_closed) {

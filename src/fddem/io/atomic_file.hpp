@@ -4,6 +4,7 @@
 /// same directory, flush, then rename over the target (DESIGN.md §4, STYLE.md §9).
 
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 
@@ -17,6 +18,9 @@ public:
 
 /// Writes `content` to `path` atomically. Throws OutputError on failure; `path` is untouched.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+/// The same for a file made of `parts`, one after the other (no copy of them is made).
+void write_file_atomically(const std::filesystem::path& path,
+                           std::span<const std::string_view> parts);
 
 /// Flushes a directory's entries (a rename into it) to disk, so that a file renamed into place
 /// survives a crash of the machine, not only of the process. Best effort: false if the file

@@ -3,18 +3,20 @@
 
 #include "fddem/core/errors.hpp"
 #include "fddem/io/atomic_file.hpp"
+#include "fddem/io/checkpoint_frame.hpp"
+#include "fddem/io/piece_archive.hpp"
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <array>
 #include <fstream>
-#include <sstream>
+#include <memory>
+#include <system_error>
 #include <zlib.h>
 
 namespace fddem {
 namespace {
-
-constexpr std::string_view magic = "FDDEMCKP";
-constexpr std::size_t trailer_bytes = 8 + 4; ///< length and CRC-32
 
 template <class Values>
 std::string list_text(const Values& values)
@@ -24,24 +26,6 @@ std::string list_text(const Values& values)
         text += fmt::format("{}{}", k == 0 ? "" : ", ", values[k]);
     }
     return text + "]";
-}
-
-void put_u32(std::string& bytes, std::uint32_t value)
-{
-    for (int k = 0; k < 4; ++k) {
-        bytes.push_back(static_cast<char>((value >> (8 * k)) & 0xffU));
-    }
-}
-
-std::uint64_t get_le(std::string_view bytes, std::size_t at, int n)
-{
-    std::uint64_t value = 0;
-    for (int k = 0; k < n; ++k) {
-        value |= static_cast<std::uint64_t>(
-                     static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]))
-                 << (8 * k);
-    }
-    return value;
 }
 
 /// The header's named values, for writing and reading alike.
@@ -54,16 +38,60 @@ void visit_header(Header& h, Archive& archive)
     archive("fddem_version", h.fddem_version);
     archive("layout", h.layout);
     archive("case", h.case_text);
+    archive("pieces", h.pieces);
+}
+
+/// This rank's piece of `sim`'s state (io/piece_archive.hpp), with everything that is not a
+/// grid array and then `record` on the first rank; in a string reserved once at its size.
+template <int Dim>
+std::string piece_state(const Simulation<Dim>& sim, bool is_first, const RunRecord& record)
+{
+    ArchiveWriter counter(ArchiveWriter::Counting{});
+    PieceWriter<Dim> count(sim.grid(), counter, is_first);
+    sim.save_state(count);
+    ArchiveWriter state;
+    if (is_first) {
+        RunRecord::visit(record, counter);
+    }
+    state.bytes().reserve(counter.size());
+    PieceWriter<Dim> writer(sim.grid(), state, is_first);
+    sim.save_state(writer);
+    if (is_first) {
+        RunRecord::visit(record, state);
+    }
+    return std::move(state.bytes());
+}
+
+template <int Dim>
+std::vector<int> box_bounds(const Box<Dim>& box, bool is_high)
+{
+    std::vector<int> bounds;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+        bounds.push_back(is_high ? box.hi[d] : box.lo[d]);
+    }
+    return bounds;
+}
+
+template <int Dim>
+Box<Dim> piece_box(const CheckpointPiece& piece)
+{
+    if (piece.lo.size() != static_cast<std::size_t>(Dim) ||
+        piece.hi.size() != static_cast<std::size_t>(Dim)) {
+        throw CheckpointError("has a piece whose box is not of the grid's dimension");
+    }
+    Box<Dim> box;
+    for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
+        box.lo[d] = piece.lo[d];
+        box.hi[d] = piece.hi[d];
+    }
+    return box;
 }
 
 } // namespace
 
 std::uint32_t crc32_of(std::string_view bytes)
 {
-    // zlib takes bytes as unsigned char; reading a char buffer through it is well defined.
-    const auto* data = reinterpret_cast<const Bytef*>( // NOLINT(*-reinterpret-cast)
-        bytes.data());
-    return static_cast<std::uint32_t>(crc32_z(crc32_z(0L, Z_NULL, 0), data, bytes.size()));
+    return continue_crc32(0, bytes);
 }
 
 template <int Dim>
@@ -93,9 +121,13 @@ CheckpointLayout checkpoint_layout(const Simulation<Dim>& sim)
         {"bodies.markers", list_text(markers)}};
 }
 
+namespace {
+
+/// Rank 0's part of write_checkpoint: the checkpoint's file, with the header (and the pieces'
+/// `table`, `width` values per rank) and its piece of the `state` (the record included).
 template <int Dim>
-void write_checkpoint(const std::filesystem::path& path, const Simulation<Dim>& sim,
-                      const RunRecord& record)
+void write_first_piece(const std::filesystem::path& path, const Simulation<Dim>& sim,
+                       const std::string& state, const std::vector<int>& table, std::size_t width)
 {
     CheckpointHeader header;
     header.dimension = Dim;
@@ -104,60 +136,85 @@ void write_checkpoint(const std::filesystem::path& path, const Simulation<Dim>& 
     header.fddem_version = FDDEM_VERSION;
     header.layout = checkpoint_layout(sim);
     header.case_text = sim.config().as_run;
+    for (std::size_t at = 0; at + width <= table.size(); at += width) {
+        CheckpointPiece piece;
+        piece.lo.assign(table.begin() + static_cast<std::ptrdiff_t>(at),
+                        table.begin() + static_cast<std::ptrdiff_t>(at + Dim));
+        piece.hi.assign(table.begin() + static_cast<std::ptrdiff_t>(at + Dim),
+                        table.begin() + static_cast<std::ptrdiff_t>(at + 2 * Dim));
+        piece.crc = static_cast<std::uint32_t>(table[at + 2 * Dim]);
+        header.pieces.push_back(std::move(piece));
+    }
 
-    ArchiveWriter archive;
-    archive.bytes() = magic;
-    archive.put_u64(checkpoint_format_version);
-    visit_header(header, archive);
-    sim.save_state(archive);
-    RunRecord::visit(record, archive);
-    std::string& bytes = archive.bytes();
-    archive.put_u64(bytes.size());
-    put_u32(bytes, crc32_of(bytes));
-    write_file_atomically(path, bytes);
+    ArchiveWriter head;
+    head.bytes() = frame_start(checkpoint_format_version);
+    visit_header(header, head);
+    // Pieces beyond this run's, left at this name by a run on more ranks (or a checkpoint set
+    // aside as damaged): not read (the table says how many there are), but not kept either.
+    std::error_code error;
+    for (auto k = static_cast<int>(header.pieces.size());
+         std::filesystem::remove(checkpoint_piece_path(path, k), error); ++k) {
+    }
+    write_framed(path, head.bytes(), state);
     static_cast<void>(sync_directory(path.parent_path())); // best effort (see there)
+}
+
+} // namespace
+
+std::filesystem::path checkpoint_piece_path(const std::filesystem::path& path, int index)
+{
+    std::filesystem::path piece = path;
+    piece += fmt::format(".piece{}", index);
+    return piece;
+}
+
+template <int Dim>
+void write_checkpoint(const std::filesystem::path& path, const Simulation<Dim>& sim,
+                      const RunRecord& record)
+{
+    const MacGrid<Dim>& grid = sim.grid();
+    const Communicator& ranks = grid.communicator();
+    const bool is_first = ranks.rank() == 0;
+    const std::string state = piece_state(sim, is_first, record);
+
+    // Every other rank writes its piece first, then tells rank 0 its box and CRC (the gather
+    // also says that every piece is on disk before the checkpoint's file names it).
+    std::uint32_t crc = 0;
+    if (!is_first) {
+        ArchiveWriter head;
+        head.bytes() = frame_start(checkpoint_format_version);
+        head("piece", static_cast<long>(ranks.rank()));
+        head("step", sim.clock().step);
+        crc = write_framed(checkpoint_piece_path(path, ranks.rank()), head.bytes(), state);
+    }
+    const Box<Dim> box = contributed_box(grid);
+    std::vector<int> mine = box_bounds(box, false);
+    for (const int high : box_bounds(box, true)) {
+        mine.push_back(high);
+    }
+    mine.push_back(static_cast<int>(crc)); // the bits of the CRC-32
+    const std::vector<int> all = ranks.all_gather(mine);
+    if (is_first) {
+        write_first_piece(path, sim, state, all, mine.size());
+    }
+    // On return the checkpoint is whole for every rank (a rank that reads it at once, or a
+    // failure on rank 0 that must not leave the others a checkpoint to find).
+    static_cast<void>(ranks.max(0.0));
 }
 
 CheckpointFile::CheckpointFile(const std::filesystem::path& path) : path_(path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw CheckpointError("cannot be opened");
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    bytes_ = std::move(text).str();
-    const std::string_view bytes = bytes_;
-    if (bytes.size() < magic.size() + 8 + trailer_bytes) {
-        throw CheckpointError(
-            fmt::format("is truncated ({} bytes; not even a header and a trailer)", bytes.size()));
-    }
-    if (bytes.substr(0, magic.size()) != magic) {
-        throw CheckpointError("is not an fddem checkpoint (no FDDEMCKP magic number)");
-    }
-    const std::uint64_t version = get_le(bytes, magic.size(), 8);
-    if (version != checkpoint_format_version) {
-        throw CheckpointError(fmt::format("has format version {}; this fddem reads version {}",
-                                          version, checkpoint_format_version));
-    }
-    state_end_ = bytes.size() - trailer_bytes;
-    const std::uint64_t length = get_le(bytes, state_end_, 8);
-    if (length != state_end_) {
-        throw CheckpointError(
-            fmt::format("is truncated or damaged ({} bytes; its trailer expects {})", bytes.size(),
-                        length + trailer_bytes));
-    }
-    const auto stored_crc = static_cast<std::uint32_t>(get_le(bytes, state_end_ + 8, 4));
-    const std::uint32_t crc = crc32_of(bytes.substr(0, state_end_ + 8));
-    if (crc != stored_crc) {
-        throw CheckpointError(
-            fmt::format("is damaged (CRC-32 {:08x}, the file records {:08x})", crc, stored_crc));
-    }
-    ArchiveReader archive(bytes.substr(0, state_end_));
+    FramedBytes file = read_framed(path, checkpoint_format_version);
+    bytes_ = std::move(file.bytes);
+    state_end_ = file.check.content_end;
+    ArchiveReader archive(std::string_view(bytes_).substr(0, state_end_));
     archive.get_u64(); // magic
     archive.get_u64(); // version
     visit_header(header_, archive);
     state_offset_ = archive.position();
+    if (header_.pieces.empty()) {
+        throw CheckpointError("lists no pieces of the grid");
+    }
 }
 
 void CheckpointFile::check_layout(const CheckpointLayout& layout) const
@@ -178,17 +235,72 @@ void CheckpointFile::check_layout(const CheckpointLayout& layout) const
     }
 }
 
+FramedStream CheckpointFile::open_piece(std::size_t index) const
+{
+    const std::filesystem::path piece_path = checkpoint_piece_path(path_, static_cast<int>(index));
+    FrameCheck check;
+    try {
+        check = check_framed(piece_path, checkpoint_format_version);
+    } catch (const CheckpointError& e) {
+        throw CheckpointError(
+            fmt::format("has a piece, {}, that {}", piece_path.filename().string(), e.what()));
+    }
+    if (check.crc != header_.pieces[index].crc) {
+        throw CheckpointError(fmt::format("has a piece, {}, of another checkpoint (CRC-32 {:08x}, "
+                                          "the checkpoint records {:08x})",
+                                          piece_path.filename().string(), check.crc,
+                                          header_.pieces[index].crc));
+    }
+    FramedStream piece(piece_path, check);
+    long number = 0;
+    long step = 0;
+    piece("piece", number);
+    piece("step", step);
+    if (number != static_cast<long>(index) || step != header_.step) {
+        throw CheckpointError(fmt::format("has a piece, {}, that says it is piece {} of step {}",
+                                          piece_path.filename().string(), number, step));
+    }
+    return piece;
+}
+
+void CheckpointFile::check_pieces() const
+{
+    for (std::size_t k = 1; k < header_.pieces.size(); ++k) {
+        static_cast<void>(open_piece(k));
+    }
+}
+
 template <int Dim>
 void CheckpointFile::restore(Simulation<Dim>& sim, RunRecord& record) const
 {
     check_layout(checkpoint_layout(sim));
+    const MacGrid<Dim>& grid = sim.grid();
+    const Box<Dim> storage = grid.storage_box();
+    // The other pieces this rank's block overlaps, each checked whole first, then read one
+    // array at a time (io/checkpoint_frame.hpp).
+    std::vector<std::unique_ptr<FramedStream>> streams;
+    std::vector<StatePiece<Dim>> others;
+    for (std::size_t k = 1; k < header_.pieces.size(); ++k) {
+        const Box<Dim> box = piece_box<Dim>(header_.pieces[k]);
+        if (intersection(box, storage).size() == 0) {
+            continue;
+        }
+        FramedStream* stream =
+            streams.emplace_back(std::make_unique<FramedStream>(open_piece(k))).get();
+        others.push_back({box, [stream](std::string_view name, std::vector<double>& values) {
+                              (*stream)(name, values);
+                          }});
+    }
+
     ArchiveReader archive(std::string_view(bytes_).substr(0, state_end_));
     archive.get_u64();
     archive.get_u64();
     CheckpointHeader ignored;
     visit_header(ignored, archive);
+    PieceReader<Dim> reader(grid, archive, piece_box<Dim>(header_.pieces.front()),
+                            std::move(others));
     try {
-        sim.load_state(archive);
+        sim.load_state(reader);
     } catch (const InputError& e) {
         throw InputError(path_.string(), 0, e.key(), e.what());
     }
@@ -196,6 +308,11 @@ void CheckpointFile::restore(Simulation<Dim>& sim, RunRecord& record) const
     if (!archive.is_at_end()) {
         throw CheckpointError(fmt::format("has {} bytes after the state (another fddem version?)",
                                           state_end_ - archive.position()));
+    }
+    for (const auto& stream : streams) {
+        if (!stream->is_at_end()) {
+            throw CheckpointError("has a piece with bytes after its grid arrays");
+        }
     }
 }
 

@@ -6,8 +6,9 @@ namespace fddem {
 void ArchiveWriter::put_name(std::string_view name)
 {
     // Names are short identifiers written by fddem itself ("body.centre").
-    bytes_.push_back(static_cast<char>(name.size() & 0xffU));
-    bytes_.append(name.substr(0, 0xff));
+    const char length = static_cast<char>(name.size() & 0xffU);
+    append(std::string_view(&length, 1));
+    append(name.substr(0, 0xff));
 }
 
 std::uint64_t ArchiveReader::get_u64()

@@ -45,10 +45,16 @@ concept ArchiveVisitable = requires(T& value, Archive& archive)
     T::visit(value, archive);
 };
 
-/// Appends named values to a byte string.
+/// Appends named values to a byte string; or, made `counting`, only counts the bytes it would
+/// append (to reserve a large archive's string once: grown by doubling, it would hold up to
+/// three times its size while it grows).
 class ArchiveWriter {
 public:
     static constexpr bool is_reading = false;
+    struct Counting {};
+
+    ArchiveWriter() = default;
+    explicit ArchiveWriter(Counting) : is_counting_(true) {}
 
     template <class T>
     void operator()(std::string_view name, const T& value)
@@ -59,9 +65,18 @@ public:
 
     [[nodiscard]] const std::string& bytes() const noexcept { return bytes_; }
     [[nodiscard]] std::string& bytes() noexcept { return bytes_; }
+    /// The bytes written (or counted) so far.
+    [[nodiscard]] std::size_t size() const noexcept
+    {
+        return is_counting_ ? counted_ : bytes_.size();
+    }
 
     void put_u64(std::uint64_t value)
     {
+        if (is_counting_) {
+            counted_ += 8;
+            return;
+        }
         for (int k = 0; k < 8; ++k) {
             bytes_.push_back(static_cast<char>((value >> (8 * k)) & 0xffU));
         }
@@ -78,7 +93,15 @@ private:
     void put(const std::string& text)
     {
         put_u64(text.size());
-        bytes_.append(text);
+        append(text);
+    }
+    void append(std::string_view text)
+    {
+        if (is_counting_) {
+            counted_ += text.size();
+        } else {
+            bytes_.append(text);
+        }
     }
     template <int Rows>
     void put(const Eigen::Matrix<double, Rows, 1>& vector)
@@ -135,6 +158,8 @@ private:
     void put(const T& value) { T::visit(value, *this); }
 
     std::string bytes_;
+    bool is_counting_ = false;
+    std::size_t counted_ = 0;
 };
 
 /// Reads named values back, in the order they were written. Throws CheckpointError when a

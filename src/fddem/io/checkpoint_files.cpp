@@ -16,6 +16,8 @@ namespace {
 
 constexpr std::string_view prefix = "checkpoint_";
 constexpr std::string_view extension = ".ckpt";
+/// What follows a checkpoint's file name in the name of one of its pieces.
+constexpr std::string_view piece_marker = ".piece";
 
 /// The step in a checkpoint's file name, none if the name is not one.
 std::optional<long> step_of(const std::string& name)
@@ -79,6 +81,22 @@ void prune_checkpoints(const std::filesystem::path& run_directory, int keep)
             throw OutputError("cannot remove the old checkpoint " + entries[k].path.string() +
                               ": " + error.message());
         }
+    }
+    // The pieces of a run on several ranks (io/checkpoint.hpp) whose checkpoint is gone: those
+    // just pruned, and those of a checkpoint set aside as damaged.
+    std::error_code error;
+    std::vector<std::filesystem::path> orphans;
+    for (const auto& file :
+         std::filesystem::directory_iterator(checkpoint_directory(run_directory), error)) {
+        const std::string name = file.path().filename().string();
+        const std::size_t at = name.find(piece_marker);
+        if (at != std::string::npos && name.find(".tmp.") == std::string::npos &&
+            !std::filesystem::exists(file.path().parent_path() / name.substr(0, at), error)) {
+            orphans.push_back(file.path());
+        }
+    }
+    for (const auto& path : orphans) {
+        std::filesystem::remove(path, error);
     }
 }
 

@@ -8,8 +8,8 @@
 #include "fddem/io/atomic_file.hpp"
 #include "fddem/io/checkpoint.hpp"
 #include "fddem/io/checkpoint_files.hpp"
-#include "fddem/io/gathering_archive.hpp"
 #include "fddem/io/run_directory.hpp"
+#include "fddem/io/summary.hpp"
 #include "fddem/run/body_snapshot.hpp"
 #include "fddem/run/line_samples.hpp"
 #include "fddem/run/memory_estimate.hpp"
@@ -34,30 +34,6 @@ Driver<Dim>::Driver(const CaseConfig& config, fs::path directory, RunMonitor& mo
     : config_(config), ranks_(ranks), sim_(config, ranks), directory_(std::move(directory)),
       monitor_(monitor), outputs_(directory_, body_count(sim_) > 0)
 {
-    if (ranks_.size() > 1) {
-        whole_grid_ = std::make_unique<MacGrid<Dim>>(make_grid<Dim>(config));
-        if (is_writer()) {
-            mirror_ = std::make_unique<Simulation<Dim>>(config);
-        }
-    }
-}
-
-template <int Dim>
-const Simulation<Dim>& Driver<Dim>::gathered()
-{
-    if (!whole_grid_) {
-        return sim_;
-    }
-    sim_.share_marker_state(); // rank 0's copy of every body's markers is what gets written
-    ArchiveWriter bytes;
-    GatheringWriter<Dim> writer(sim_.grid(), *whole_grid_, bytes);
-    sim_.save_state(writer);
-    if (!mirror_) {
-        return sim_;
-    }
-    ArchiveReader reader(bytes.bytes());
-    mirror_->load_state(reader);
-    return *mirror_;
 }
 
 template <int Dim>
@@ -144,6 +120,8 @@ template <int Dim>
 RunResult Driver<Dim>::end_run(const std::string& failure, int signal)
 {
     const Clock& clock = sim_.clock();
+    // Every rank ends here: the others' memory for rank 0's summary.json (collective).
+    other_ranks_peak_mib_ = ranks_.max(is_writer() ? 0.0 : peak_memory_mib());
     if (!failure.empty()) {
         // The simulation is back at the end of the last good step (Simulation::advance): its
         // fields and samples close the outputs, and its checkpoint lets the run go on from
@@ -271,9 +249,8 @@ void Driver<Dim>::close_outputs(const std::string& status)
     if (!has_frame) {
         outputs_.write_frame(sim_);
     }
-    const Simulation<Dim>& state = gathered();
+    write_line_samples(sim_, config_.output.lines, directory_); // collective; rank 0 writes
     if (is_writer()) {
-        write_line_samples(state, config_.output.lines, directory_);
         write_summary(status);
     }
     write_checkpoint_now(n_frames);
@@ -282,16 +259,20 @@ void Driver<Dim>::close_outputs(const std::string& status)
 template <int Dim>
 void Driver<Dim>::write_checkpoint_now(std::size_t n_frames)
 {
-    const Simulation<Dim>& state = gathered();
+    // Every rank writes its piece (io/checkpoint.hpp), rank 0 the checkpoint's file with the
+    // record and then prunes; rank 0's copy of every body's markers is what gets written.
+    sim_.share_marker_state();
     last_checkpoint_ = checkpoint_path(directory_, sim_.clock().step);
-    if (!is_writer()) {
-        return;
+    if (is_writer()) {
+        outputs_.record_lengths(record_, n_frames);
+        record_.wall_seconds = wall_seconds();
     }
-    outputs_.record_lengths(record_, n_frames);
-    record_.wall_seconds = wall_seconds();
-    fs::create_directories(checkpoint_directory(directory_));
-    write_checkpoint(last_checkpoint_, state, record_);
-    prune_checkpoints(directory_, config_.checkpoint.keep);
+    std::error_code exists; // another rank may be making it at the same moment
+    fs::create_directories(checkpoint_directory(directory_), exists);
+    write_checkpoint(last_checkpoint_, sim_, record_);
+    if (is_writer()) {
+        prune_checkpoints(directory_, config_.checkpoint.keep);
+    }
 }
 
 template <int Dim>
@@ -312,11 +293,10 @@ void Driver<Dim>::warn_of_wall_ring()
 template <int Dim>
 void Driver<Dim>::write_summary(const std::string& status) const
 {
-    // The mirror has rank 0's phase times but not its communication: those are sim_'s.
-    const RankCosts costs{ranks_.size(), sim_.grid().communicator().traffic(),
-                          sim_.phase_times().communication};
-    write_run_summary(mirror_ ? *mirror_ : sim_, config_, record_, status,
-                      directory_ / "summary.json", costs);
+    // Rank 0's phase times and communication, the other ranks' memory.
+    const RankCosts costs{ranks_.size(), other_ranks_peak_mib_,
+                          sim_.grid().communicator().traffic(), sim_.phase_times().communication};
+    write_run_summary(sim_, config_, record_, status, directory_ / "summary.json", costs);
 }
 
 template class Driver<2>;

@@ -36,13 +36,14 @@ public:
     /// written), on `ranks`. `monitor` must outlive the driver.
     ///
     /// On several ranks (issue 15; every rank holds all bodies) every rank steps its block and
-    /// writes its pieces of the field and particle frames (run/field_frames.hpp), and rank 0
-    /// alone writes the rest: the run directory, solver.csv, particles.csv, the frames' master
-    /// files and .pvd collections, the progress and messages (the other ranks' monitors should
-    /// be quiet), and the line samples, summary and checkpoints of a one-process mirror of the
-    /// run that the ranks' state is gathered into first (io/gathering_archive.hpp). The files
-    /// are those of a one-process run of the same case, but for the frames in pieces; a
-    /// checkpoint continues on any number of ranks.
+    /// writes its pieces of the field and particle frames (run/field_frames.hpp) and of the
+    /// checkpoints (io/checkpoint.hpp), and samples the line points in its cells; rank 0 alone
+    /// writes the rest: the run directory, solver.csv, particles.csv, the frames' master files
+    /// and .pvd collections, the checkpoints' files, the line samples (gathered point by
+    /// point), summary.json, the progress and messages (the other ranks' monitors should be
+    /// quiet). No rank holds the whole grid. The files are those of a one-process run of the
+    /// same case, but for the frames and checkpoints in pieces; a checkpoint continues on any
+    /// number of ranks.
     Driver(const CaseConfig& config, std::filesystem::path directory, RunMonitor& monitor,
            const Communicator& ranks = Communicator::self());
 
@@ -79,20 +80,12 @@ private:
     /// time.steady: whether the march reached the steady state and solved its last step.
     [[nodiscard]] std::string steady_march_verdict() const;
     [[nodiscard]] double wall_seconds() const;
-    /// The run as one process holds it, for the line samples, summary and checkpoints: the
-    /// simulation itself on one process; on several, the mirror on rank 0 after the ranks'
-    /// state is gathered into it (collective: every rank calls it at the same point; the other
-    /// ranks get their own block, which they do not write).
-    const Simulation<Dim>& gathered();
     /// Whether this process writes the run's files.
     [[nodiscard]] bool is_writer() const noexcept { return ranks_.rank() == 0; }
 
     CaseConfig config_;
     Communicator ranks_;
     Simulation<Dim> sim_;
-    /// On several ranks: the case's grid on one process, and on rank 0 the run's mirror.
-    std::unique_ptr<MacGrid<Dim>> whole_grid_;
-    std::unique_ptr<Simulation<Dim>> mirror_;
     std::filesystem::path directory_;
     RunMonitor& monitor_;
     RunOutputs<Dim> outputs_;
@@ -103,6 +96,9 @@ private:
     std::chrono::steady_clock::time_point loop_start_;
     /// Retried steps this process has taken (time.max_retries); the first few are reported.
     long retried_steps_ = 0;
+    /// On several ranks: the largest peak resident memory of the ranks other than 0 [MiB], taken
+    /// at the end of the run (end_run), for summary.json.
+    double other_ranks_peak_mib_ = 0.0;
     /// Whether this process warned of a shallow marker ring beside a wall (warn_of_wall_ring).
     bool has_warned_wall_ring_ = false;
     static constexpr long max_reported_retries = 10;

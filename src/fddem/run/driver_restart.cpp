@@ -8,7 +8,6 @@
 #include "fddem/io/case_changes.hpp"
 #include "fddem/io/checkpoint.hpp"
 #include "fddem/io/checkpoint_files.hpp"
-#include "fddem/io/gathering_archive.hpp"
 #include "fddem/run/driver.hpp"
 #include "fddem/run/field_frames.hpp"
 #include "fddem/run/memory_estimate.hpp"
@@ -58,47 +57,45 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
     std::vector<Damaged> damaged;
     std::optional<CheckpointEntry> used;
     std::string checkpoint_case;
-    // On several ranks rank 0 reads the checkpoint (a one-process state) into its mirror and
-    // hands it to the ranks, each of which keeps its block (io/gathering_archive.hpp).
-    Simulation<Dim>& reader = mirror_ ? *mirror_ : sim_;
-    if (is_writer()) {
-        for (const CheckpointEntry& entry : list_checkpoints(directory_)) {
+    // Every rank reads the checkpoint's file and the pieces its block overlaps
+    // (io/checkpoint.hpp); a checkpoint one rank cannot use is set aside by all of them.
+    for (const CheckpointEntry& entry : list_checkpoints(directory_)) {
+        std::string reason;
+        try {
+            const CheckpointFile file(entry.path);
+            file.restore(sim_, record_);
+            checkpoint_case = file.header().case_text;
+        } catch (const CheckpointError& e) {
+            reason = e.what();
+        }
+        // A rank that could not use it (the highest), or −1.
+        const int failed = static_cast<int>(ranks_.max(reason.empty() ? -1.0 : ranks_.rank()));
+        if (failed < 0) {
+            used = entry;
+            break;
+        }
+        if (!is_writer()) {
+            continue;
+        }
+        if (reason.empty()) {
+            // Another rank's piece: rank 0 reads every piece to say which and why.
             try {
-                const CheckpointFile file(entry.path);
-                file.restore(reader, record_);
-                used = entry;
-                checkpoint_case = file.header().case_text;
-                break;
+                CheckpointFile(entry.path).check_pieces();
+                reason = fmt::format("could not be read on rank {}", failed);
             } catch (const CheckpointError& e) {
-                damaged.push_back({entry.path, e.what()});
+                reason = e.what();
             }
         }
+        damaged.push_back({entry.path, reason});
     }
-    if (whole_grid_) {
-        // (A rank-0 error below ends every rank: app/main.cpp.)
-        std::string bytes;
-        if (used) {
-            ArchiveWriter writer;
-            reader.save_state(writer);
-            writer("record", std::as_const(record_));
-            bytes = std::move(writer.bytes());
+    if (ranks_.size() > 1 && !is_writer()) {
+        if (!used) {
+            // No usable checkpoint: rank 0 says why below and ends every rank.
+            return {RunResult::Outcome::completed, 0};
         }
-        ranks_.broadcast(bytes);
-        if (bytes.empty()) {
-            if (!is_writer()) {
-                // No usable checkpoint: rank 0 says why below and ends every rank.
-                return {RunResult::Outcome::completed, 0};
-            }
-        } else {
-            ArchiveReader in(bytes);
-            BlockReader<Dim> block(sim_.grid(), *whole_grid_, in);
-            sim_.load_state(block);
-            if (!is_writer()) {
-                block("record", record_);
-                // The other ranks step along; rank 0 checks and prepares the run directory.
-                return sim_.is_finished(record_.last) ? RunResult{} : step_to_end();
-            }
-        }
+        // The other ranks step along; rank 0 checks and prepares the run directory (a rank-0
+        // error below ends every rank: app/main.cpp).
+        return sim_.is_finished(record_.last) ? RunResult{} : step_to_end();
     }
     if (!used) {
         std::string reasons;

@@ -93,6 +93,7 @@ void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
     if (costs.ranks > 1) {
         const Traffic& traffic = costs.traffic;
         summary.set("mpi_ranks", static_cast<long>(costs.ranks));
+        summary.set("mpi_other_ranks_peak_memory_mib", costs.other_ranks_peak_memory_mib);
         summary.set("mpi_rank0_messages", traffic.messages);
         summary.set("mpi_rank0_message_bytes", traffic.bytes);
         summary.set("mpi_rank0_collectives", traffic.collectives);

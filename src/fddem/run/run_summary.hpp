@@ -12,10 +12,12 @@
 
 namespace fddem {
 
-/// What a split run costs rank 0 in communication (summary.json's mpi_* keys).
+/// What a split run costs rank 0 in communication, and the other ranks in memory (summary.json's
+/// mpi_* keys).
 struct RankCosts {
     int ranks = 1;
-    Traffic traffic;                              ///< its messages, collectives and their time
+    double other_ranks_peak_memory_mib = 0.0; ///< the largest peak resident memory of ranks ≥ 1
+    Traffic traffic;                          ///< its messages, collectives and their time
     std::array<double, n_phases> communication{}; ///< that time by phase (PhaseTimes)
 };
 
