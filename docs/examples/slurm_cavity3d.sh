@@ -2,17 +2,20 @@
 # An example SLURM batch script for a run of fddem on several MPI processes (issue 15;
 # docs/parallel.md). Adapt the partition, the module lines and the paths to your cluster.
 #
-# What runs on several processes today: cases without bodies (a case with bodies is refused
-# with exit status 2). The grid is split into Cartesian blocks, one per process (the layout
-# with the least interface area). Rank 0 writes every output file, gathered from the blocks.
+# What runs on several processes: any case, with no change to it (the bodies are held whole by
+# every rank; docs/parallel.md says what is not split yet). The grid is split into Cartesian
+# blocks, one per process (the layout with the least interface area). Every rank writes its
+# pieces of the field frames and checkpoints; rank 0 writes the other files. No rank holds the
+# whole grid (since the thirty-eighth session).
 #
-# Memory (docs/testing.md, "Memory estimate"; the estimate fddem prints at the start):
+# Memory (docs/testing.md, "Memory estimate"; the estimate fddem prints at the start is the
+# one-process run's):
 #   one process:   48 MiB + 850 B per cell in 2D, 1700 B per cell in 3D;
-#   N processes:   each rank about 48 MiB + its block's cells at that rate, and rank 0 in
-#                  addition the whole run's state (a one-process mirror it writes the outputs
-#                  from): about 1700 B per cell of the whole grid in 3D.
-# Example: a 256³ cavity (16.8 M cells) on 64 ranks: ~0.5 GiB per rank, ~28 GiB more on
-# rank 0. That extra is why rank 0 asks for a node of its own below (--mem per node).
+#   N processes:   each rank, rank 0 included, about 48 MiB + its block's cells at that rate
+#                  (measured: the 96³ cube on 2 ranks peaked at 529 and 493 MiB, one process
+#                  at 960 MiB; `bench/run.sh --no-base --mpi-memory 96`).
+# Example: a 256³ cavity (16.8 M cells) on 64 ranks: about 0.5 GiB per rank, 15 GiB for the 32
+# ranks of a node; --mem below leaves room for the MPI library's buffers.
 #
 # Speed: not measured on a cluster. On one 2-core machine, 2 ranks ran a 128² cavity 3× slower
 # than one process (docs/parallel.md); blocks of at least ~10⁵ cells per rank are advised until
@@ -22,7 +25,7 @@
 #SBATCH --nodes=2
 #SBATCH --ntasks-per-node=32
 #SBATCH --cpus-per-task=1
-#SBATCH --mem=120G
+#SBATCH --mem=32G
 #SBATCH --time=02:00:00
 #SBATCH --output=fddem-%j.log
 

@@ -94,6 +94,21 @@ int Communicator::size() const noexcept
     return mpi_ ? mpi_->size : 1;
 }
 
+int Communicator::ranks_on_this_node() const
+{
+    if (!mpi_) {
+        return 1;
+    }
+    // The ranks that can share memory with this one: those of this machine (MPI-3).
+    MPI_Comm node = MPI_COMM_NULL;
+    check(MPI_Comm_split_type(mpi_->comm, MPI_COMM_TYPE_SHARED, mpi_->rank, MPI_INFO_NULL, &node),
+          "MPI_Comm_split_type");
+    int size = 1;
+    check(MPI_Comm_size(node, &size), "MPI_Comm_size");
+    MPI_Comm_free(&node);
+    return size;
+}
+
 Traffic Communicator::traffic() const noexcept
 {
     return mpi_ ? mpi_->sent : Traffic{};

@@ -60,6 +60,9 @@ public:
 
     [[nodiscard]] int rank() const noexcept;
     [[nodiscard]] int size() const noexcept;
+    /// How many of the ranks run on this machine (share its memory), this one included; 1 on
+    /// this process alone. Collective.
+    [[nodiscard]] int ranks_on_this_node() const;
     /// True if this is more than one process (or one process through MPI).
     [[nodiscard]] bool uses_mpi() const noexcept { return mpi_ != nullptr; }
 

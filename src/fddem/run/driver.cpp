@@ -31,8 +31,9 @@ using Seconds = std::chrono::duration<double>;
 template <int Dim>
 Driver<Dim>::Driver(const CaseConfig& config, fs::path directory, RunMonitor& monitor,
                     const Communicator& ranks)
-    : config_(config), ranks_(ranks), sim_(config, ranks), directory_(std::move(directory)),
-      monitor_(monitor), outputs_(directory_, body_count(sim_) > 0)
+    : config_(config), ranks_(ranks), ranks_on_node_(ranks.ranks_on_this_node()),
+      sim_(config, ranks), directory_(std::move(directory)), monitor_(monitor),
+      outputs_(directory_, body_count(sim_) > 0)
 {
 }
 
@@ -49,7 +50,7 @@ RunResult Driver<Dim>::start(bool overwrite)
             outputs_.append_particles(sim_);
         }
     }
-    report_start(config_, monitor_);
+    report_start(config_, monitor_, ranks_.size(), ranks_on_node_);
     report_derived_values(config_, monitor_);
     outputs_.write_frame(sim_);
     record_.next_particle_time = config_.output.particle_interval;

@@ -85,6 +85,7 @@ private:
 
     CaseConfig config_;
     Communicator ranks_;
+    int ranks_on_node_; ///< how many of the ranks run on this machine (for the memory estimate)
     Simulation<Dim> sim_;
     std::filesystem::path directory_;
     RunMonitor& monitor_;

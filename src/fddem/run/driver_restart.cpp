@@ -133,7 +133,7 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
         monitor_.message(fmt::format("fddem: checkpoint {} {}; set aside as {}", file.path.string(),
                                      file.reason, aside.filename().string()));
     }
-    report_start(config_, monitor_);
+    report_start(config_, monitor_, ranks_.size(), ranks_on_node_);
     monitor_.message(fmt::format("fddem: restarting {} from step {} (t = {:g} s), {}",
                                  directory_.string(), clock.step, clock.time,
                                  used->path.filename().string()));

@@ -2,6 +2,7 @@
 #include "fddem/run/memory_estimate.hpp"
 
 #include "fddem/core/errors.hpp"
+#include "fddem/simulation/simulation_setup.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -63,9 +64,29 @@ std::string cells_text(const CaseConfig& config)
 
 double estimate_run_memory(const CaseConfig& config)
 {
+    return estimate_rank_memory(config, 1);
+}
+
+double estimate_rank_memory(const CaseConfig& config, int n_ranks)
+{
+    // The largest block: ⌈n/p⌉ cells along each axis; its storage grows by 1 + 2 ghost layers
+    // per axis as the whole grid's does, which the per-cell figure was measured with.
+    std::vector<int> ranks(config.domain.cells.size(), 1);
+    if (n_ranks > 1 && config.domain.dimension == 2) {
+        const Index<2> layout = rank_layout<2>(config, n_ranks);
+        ranks.assign(layout.begin(), layout.end());
+    } else if (n_ranks > 1) {
+        const Index<3> layout = rank_layout<3>(config, n_ranks);
+        ranks.assign(layout.begin(), layout.end());
+    }
+    constexpr int storage_extra = 1 + 2 * MacGrid<3>::n_ghost;
     double cells = 1.0;
-    for (const int n : config.domain.cells) {
-        cells *= n;
+    for (std::size_t d = 0; d < config.domain.cells.size(); ++d) {
+        const int n = config.domain.cells[d];
+        const int block = (n + ranks[d] - 1) / ranks[d];
+        cells *= ranks[d] == 1
+                     ? n
+                     : static_cast<double>(block + storage_extra) * n / (n + storage_extra);
     }
     double markers = 0.0;
     for (const BodyConfig& body : config.bodies) {
@@ -102,9 +123,10 @@ std::string memory_text(double bytes)
                         : fmt::format("{:.3g} MiB", bytes / mib);
 }
 
-void check_run_memory(const CaseConfig& config, std::optional<double> limit)
+void check_run_memory(const CaseConfig& config, std::optional<double> limit, int n_ranks,
+                      int ranks_on_node)
 {
-    const double estimate = estimate_run_memory(config);
+    const double estimate = ranks_on_node * estimate_rank_memory(config, n_ranks);
     if (!limit || estimate <= *limit) {
         return;
     }
@@ -112,17 +134,30 @@ void check_run_memory(const CaseConfig& config, std::optional<double> limit)
                                   ? fmt::format("run.max_memory = {:g} B", *config.run.max_memory)
                                   : "the memory of this machine";
     throw InputError(config.source_file, 0, "domain.cells",
-                     fmt::format("a grid of {} cells needs about {} (estimate), more than {} "
-                                 "({}); use fewer cells{}",
-                                 cells_text(config), memory_text(estimate), whose,
-                                 memory_text(*limit),
+                     fmt::format("a grid of {} cells needs about {} (estimate{}), more than {} "
+                                 "({}); use fewer cells{}{}",
+                                 cells_text(config), memory_text(estimate),
+                                 n_ranks > 1 ? fmt::format(", for the {} of its {} ranks on this "
+                                                           "machine",
+                                                           ranks_on_node, n_ranks)
+                                             : "",
+                                 whose, memory_text(*limit), n_ranks > 1 ? " or more machines" : "",
                                  config.run.max_memory ? "" : ", or set run.max_memory"));
 }
 
-std::string memory_message(const CaseConfig& config, std::optional<double> limit)
+std::string memory_message(const CaseConfig& config, std::optional<double> limit, int n_ranks,
+                           int ranks_on_node)
 {
-    return fmt::format("fddem: memory estimate {} for {} cells{}",
-                       memory_text(estimate_run_memory(config)), cells_text(config),
+    const std::string split =
+        n_ranks > 1
+            ? fmt::format("; on {} ranks about {} for the largest block, {} for the {} "
+                          "on this machine",
+                          n_ranks, memory_text(estimate_rank_memory(config, n_ranks)),
+                          memory_text(ranks_on_node * estimate_rank_memory(config, n_ranks)),
+                          ranks_on_node)
+            : "";
+    return fmt::format("fddem: memory estimate {} for {} cells{}{}",
+                       memory_text(estimate_run_memory(config)), cells_text(config), split,
                        limit ? fmt::format(" (limit {})", memory_text(*limit)) : "");
 }
 

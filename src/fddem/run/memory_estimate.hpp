@@ -17,6 +17,12 @@ namespace fddem {
 /// overflow for any grid (the cell count is a double).
 [[nodiscard]] double estimate_run_memory(const CaseConfig& config);
 
+/// The estimated peak resident memory of the rank with the largest block of a run of `config`
+/// on `n_ranks` processes [B]: the fixed part, the per-cell part for its block's cells (scaled
+/// by its storage with ghosts against the whole grid's), and every body's markers (every rank
+/// holds every body). On one rank, estimate_run_memory.
+[[nodiscard]] double estimate_rank_memory(const CaseConfig& config, int n_ranks);
+
 /// The memory this process may use [B]: the machine's physical memory, or its cgroup's limit
 /// where that is lower; none if neither can be read.
 [[nodiscard]] std::optional<double> available_memory();
@@ -28,11 +34,16 @@ namespace fddem {
 [[nodiscard]] std::string memory_text(double bytes);
 
 /// Before anything is allocated: throws InputError (naming domain.cells, with the estimate)
-/// when the estimate exceeds `limit` [B].
-void check_run_memory(const CaseConfig& config, std::optional<double> limit);
+/// when what the ranks on this machine need exceeds `limit` [B]: on `n_ranks` processes of which
+/// `ranks_on_node` share this machine, ranks_on_node × estimate_rank_memory (a run split over
+/// several machines needs on each only its ranks' share).
+void check_run_memory(const CaseConfig& config, std::optional<double> limit, int n_ranks = 1,
+                      int ranks_on_node = 1);
 
 /// "fddem: memory estimate 1.2 GiB for 512 × 512 cells (limit 15.6 GiB)", which every run
-/// prints at its start.
-[[nodiscard]] std::string memory_message(const CaseConfig& config, std::optional<double> limit);
+/// prints at its start; on several ranks it adds the largest rank's estimate and what the ranks
+/// on this machine need.
+[[nodiscard]] std::string memory_message(const CaseConfig& config, std::optional<double> limit,
+                                         int n_ranks = 1, int ranks_on_node = 1);
 
 } // namespace fddem

@@ -25,7 +25,7 @@ RunResult drive(const CaseConfig& config, const fs::path& directory, RunMonitor&
                 const Communicator& ranks, const Go& go)
 {
     // Before anything is allocated: a grid that does not fit stops here (exit status 2).
-    check_run_memory(config, run_memory_limit(config));
+    check_run_memory(config, run_memory_limit(config), ranks.size(), ranks.ranks_on_this_node());
     if (config.domain.dimension == 2) {
         Driver<2> driver(config, directory, monitor, ranks);
         return go(driver);

@@ -64,9 +64,9 @@ void warn_of_overshooting_forcing(const CaseConfig& config, RunMonitor& monitor)
 
 } // namespace
 
-void report_start(const CaseConfig& config, RunMonitor& monitor)
+void report_start(const CaseConfig& config, RunMonitor& monitor, int n_ranks, int ranks_on_node)
 {
-    monitor.message(memory_message(config, run_memory_limit(config)));
+    monitor.message(memory_message(config, run_memory_limit(config), n_ranks, ranks_on_node));
 #ifdef FDDEM_HAVE_OPENMP
     const std::string placement = thread_placement_warning(omp_get_max_threads(), usable_cpus());
     if (!placement.empty()) {

@@ -39,20 +39,29 @@ MacGrid<Dim> make_grid(const CaseConfig& config, const Communicator& ranks)
     if (ranks.size() == 1) {
         return MacGrid<Dim>(cells, origin, length, is_periodic);
     }
+    return MacGrid<Dim>(
+        cells, origin, length, is_periodic,
+        partition_grid<Dim>(ranks, cells, is_periodic, rank_layout<Dim>(config, ranks.size())));
+}
+
+template <int Dim>
+Index<Dim> rank_layout(const CaseConfig& config, int n_ranks)
+{
+    Index<Dim> cells{};
+    std::copy_n(config.domain.cells.begin(), Dim, cells.begin());
     Index<Dim> layout{};
     try {
         if (config.parallel.ranks.empty()) {
-            layout = choose_rank_layout<Dim>(cells, ranks.size());
+            layout = choose_rank_layout<Dim>(cells, n_ranks);
         } else {
             // parallel.ranks (its entry count is the dimension's: io/case_keys)
             std::copy_n(config.parallel.ranks.begin(), Dim, layout.begin());
-            check_rank_layout<Dim>(cells, layout, ranks.size());
+            check_rank_layout<Dim>(cells, layout, n_ranks);
         }
     } catch (const InputError& e) { // the grid's checks do not know the case file
         throw InputError(config.source_file, 0, e.key(), e.what());
     }
-    return MacGrid<Dim>(cells, origin, length, is_periodic,
-                        partition_grid<Dim>(ranks, cells, is_periodic, layout));
+    return layout;
 }
 
 template <int Dim>
@@ -212,6 +221,7 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
 
 #define FDDEM_INSTANTIATE_SETUP(DIM)                                                               \
     template MacGrid<DIM> make_grid<DIM>(const CaseConfig&, const Communicator&);                  \
+    template Index<DIM> rank_layout<DIM>(const CaseConfig&, int);                                  \
     template BoundaryConditions<DIM> make_boundary_conditions<DIM>(const CaseConfig&);             \
     template Vec<DIM> vector_of<DIM>(const std::vector<double>&);                                  \
     template AngularVec<DIM> angular_of<DIM>(const std::vector<double>&);                          \

@@ -13,10 +13,14 @@
 
 namespace fddem {
 
-/// The case's grid, split over `ranks` (grid/grid_partition.hpp: the layout with the least
-/// interface area) if they are more than one process. Throws InputError if the case is not
-/// Dim-dimensional, if the blocks would be too thin, or if the case has bodies and the grid is
-/// split (particles across ranks are not built yet: issue 15).
+/// The ranks along each axis of a run on `n_ranks` processes: parallel.ranks (checked), or the
+/// layout with the least interface area (grid/grid_partition.hpp). Throws InputError naming the
+/// case file when there is none.
+template <int Dim>
+[[nodiscard]] Index<Dim> rank_layout(const CaseConfig& config, int n_ranks);
+
+/// The case's grid, split over `ranks` (rank_layout) if they are more than one process. Throws
+/// InputError if the case is not Dim-dimensional or if the blocks would be too thin.
 template <int Dim>
 [[nodiscard]] MacGrid<Dim> make_grid(const CaseConfig& config,
                                      const Communicator& ranks = Communicator::self());
