@@ -86,18 +86,6 @@ sample_line_owned(const MacGrid<Dim>& grid, const FaceField<Dim>& u, const CellF
 }
 
 template <int Dim>
-std::vector<std::vector<double>> sample_line(const MacGrid<Dim>& grid, const FaceField<Dim>& u,
-                                             const CellField<Dim>& p, const Vec<Dim>& from,
-                                             const Vec<Dim>& to, int n_points)
-{
-    std::vector<std::vector<double>> rows = sample_line_owned(grid, u, p, from, to, n_points);
-    for (std::vector<double>& row : rows) {
-        row.erase(row.begin()); // the point's number
-    }
-    return rows;
-}
-
-template <int Dim>
 void cell_centred_velocity(const MacGrid<Dim>& grid, const FaceField<Dim>& u, int axis,
                            CellField<Dim>& out)
 {
@@ -130,12 +118,6 @@ template Vec<2> sample_velocity<2>(const MacGrid<2>&, const FaceField<2>&, const
 template Vec<3> sample_velocity<3>(const MacGrid<3>&, const FaceField<3>&, const Vec<3>&);
 template double sample_cell_field<2>(const MacGrid<2>&, const CellField<2>&, const Vec<2>&);
 template double sample_cell_field<3>(const MacGrid<3>&, const CellField<3>&, const Vec<3>&);
-template std::vector<std::vector<double>> sample_line<2>(const MacGrid<2>&, const FaceField<2>&,
-                                                         const CellField<2>&, const Vec<2>&,
-                                                         const Vec<2>&, int);
-template std::vector<std::vector<double>> sample_line<3>(const MacGrid<3>&, const FaceField<3>&,
-                                                         const CellField<3>&, const Vec<3>&,
-                                                         const Vec<3>&, int);
 template std::vector<std::vector<double>> sample_line_owned<2>(const MacGrid<2>&,
                                                                const FaceField<2>&,
                                                                const CellField<2>&, const Vec<2>&,

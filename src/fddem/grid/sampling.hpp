@@ -20,14 +20,8 @@ template <int Dim>
 [[nodiscard]] double sample_cell_field(const MacGrid<Dim>& grid, const CellField<Dim>& phi,
                                        const Vec<Dim>& x);
 
-/// Rows (x, y[, z], u, v[, w], p) at n_points equally spaced points from `from` to `to`, on
-/// one process.
-template <int Dim>
-[[nodiscard]] std::vector<std::vector<double>>
-sample_line(const MacGrid<Dim>& grid, const FaceField<Dim>& u, const CellField<Dim>& p,
-            const Vec<Dim>& from, const Vec<Dim>& to, int n_points);
-
-/// The rows of sample_line at the points whose cell this process owns (MacGrid::owns_point;
+/// Rows (k, x, y[, z], u, v[, w], p) at those of n_points equally spaced points from `from` to
+/// `to` (k = 0 … n_points − 1) whose cell this process owns (MacGrid::owns_point;
 /// on a split grid each point has one owner, whose storage holds the interpolation's stencil),
 /// each row preceded by the point's number k (0 … n_points − 1). The ghosts of u and p next to
 /// the block must be filled.

@@ -9,11 +9,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
-#include <fstream>
 #include <memory>
 #include <system_error>
-#include <zlib.h>
 
 namespace fddem {
 namespace {
@@ -39,6 +36,7 @@ void visit_header(Header& h, Archive& archive)
     archive("layout", h.layout);
     archive("case", h.case_text);
     archive("pieces", h.pieces);
+    archive("pieces_write", h.pieces_write);
 }
 
 /// This rank's piece of `sim`'s state (io/piece_archive.hpp), with everything that is not a
@@ -123,11 +121,37 @@ CheckpointLayout checkpoint_layout(const Simulation<Dim>& sim)
 
 namespace {
 
+/// The write number of each piece file of the checkpoint `path` that is there (the <w> of
+/// "<name>.<w>.piece<r>"), with its path.
+std::vector<std::pair<long, std::filesystem::path>>
+existing_pieces(const std::filesystem::path& path)
+{
+    std::vector<std::pair<long, std::filesystem::path>> pieces;
+    const std::string prefix = path.filename().string() + ".";
+    std::error_code error;
+    for (const auto& file : std::filesystem::directory_iterator(path.parent_path(), error)) {
+        const std::string name = file.path().filename().string();
+        const std::size_t at = name.find(".piece");
+        if (!name.starts_with(prefix) || at == std::string::npos ||
+            name.find(".tmp.") != std::string::npos) {
+            continue;
+        }
+        try {
+            pieces.emplace_back(std::stol(name.substr(prefix.size(), at - prefix.size())),
+                                file.path());
+        } catch (const std::exception&) { // not a number: not one of ours
+        }
+    }
+    return pieces;
+}
+
 /// Rank 0's part of write_checkpoint: the checkpoint's file, with the header (and the pieces'
-/// `table`, `width` values per rank) and its piece of the `state` (the record included).
+/// `table`, `width` values per rank, written as `write`) and its piece of the `state` (the
+/// record included); then the pieces of earlier writes of this checkpoint are removed.
 template <int Dim>
 void write_first_piece(const std::filesystem::path& path, const Simulation<Dim>& sim,
-                       const std::string& state, const std::vector<int>& table, std::size_t width)
+                       const std::string& state, const std::vector<int>& table, std::size_t width,
+                       long write)
 {
     CheckpointHeader header;
     header.dimension = Dim;
@@ -136,6 +160,7 @@ void write_first_piece(const std::filesystem::path& path, const Simulation<Dim>&
     header.fddem_version = FDDEM_VERSION;
     header.layout = checkpoint_layout(sim);
     header.case_text = sim.config().as_run;
+    header.pieces_write = write;
     for (std::size_t at = 0; at + width <= table.size(); at += width) {
         CheckpointPiece piece;
         piece.lo.assign(table.begin() + static_cast<std::ptrdiff_t>(at),
@@ -149,22 +174,42 @@ void write_first_piece(const std::filesystem::path& path, const Simulation<Dim>&
     ArchiveWriter head;
     head.bytes() = frame_start(checkpoint_format_version);
     visit_header(header, head);
-    // Pieces beyond this run's, left at this name by a run on more ranks (or a checkpoint set
-    // aside as damaged): not read (the table says how many there are), but not kept either.
-    std::error_code error;
-    for (auto k = static_cast<int>(header.pieces.size());
-         std::filesystem::remove(checkpoint_piece_path(path, k), error); ++k) {
-    }
     write_framed(path, head.bytes(), state);
     static_cast<void>(sync_directory(path.parent_path())); // best effort (see there)
+    // An earlier write of this checkpoint (a step written again after a numerical failure, or
+    // by a run on more ranks) left pieces under another write number: no longer read.
+    for (const auto& [number, piece] : existing_pieces(path)) {
+        if (number != write) {
+            std::error_code ignored;
+            std::filesystem::remove(piece, ignored);
+        }
+    }
+}
+
+/// A write number for a new write of the checkpoint `path` that no piece file there has, the
+/// same on every rank (rank 0 looks, and tells the others): a write at the same name never
+/// touches the pieces the checkpoint's file there names until that file is replaced.
+long next_write_number(const std::filesystem::path& path, const Communicator& ranks)
+{
+    std::string number;
+    if (ranks.rank() == 0) {
+        long largest = 0;
+        for (const auto& [write, piece] : existing_pieces(path)) {
+            largest = std::max(largest, write);
+        }
+        number = std::to_string(largest + 1);
+    }
+    ranks.broadcast(number);
+    return std::stol(number);
 }
 
 } // namespace
 
-std::filesystem::path checkpoint_piece_path(const std::filesystem::path& path, int index)
+std::filesystem::path checkpoint_piece_path(const std::filesystem::path& path, long write,
+                                            int index)
 {
     std::filesystem::path piece = path;
-    piece += fmt::format(".piece{}", index);
+    piece += fmt::format(".{}.piece{}", write, index);
     return piece;
 }
 
@@ -176,6 +221,7 @@ void write_checkpoint(const std::filesystem::path& path, const Simulation<Dim>& 
     const Communicator& ranks = grid.communicator();
     const bool is_first = ranks.rank() == 0;
     const std::string state = piece_state(sim, is_first, record);
+    const long write = next_write_number(path, ranks);
 
     // Every other rank writes its piece first, then tells rank 0 its box and CRC (the gather
     // also says that every piece is on disk before the checkpoint's file names it).
@@ -185,7 +231,7 @@ void write_checkpoint(const std::filesystem::path& path, const Simulation<Dim>& 
         head.bytes() = frame_start(checkpoint_format_version);
         head("piece", static_cast<long>(ranks.rank()));
         head("step", sim.clock().step);
-        crc = write_framed(checkpoint_piece_path(path, ranks.rank()), head.bytes(), state);
+        crc = write_framed(checkpoint_piece_path(path, write, ranks.rank()), head.bytes(), state);
     }
     const Box<Dim> box = contributed_box(grid);
     std::vector<int> mine = box_bounds(box, false);
@@ -195,7 +241,7 @@ void write_checkpoint(const std::filesystem::path& path, const Simulation<Dim>& 
     mine.push_back(static_cast<int>(crc)); // the bits of the CRC-32
     const std::vector<int> all = ranks.all_gather(mine);
     if (is_first) {
-        write_first_piece(path, sim, state, all, mine.size());
+        write_first_piece(path, sim, state, all, mine.size(), write);
     }
     // On return the checkpoint is whole for every rank (a rank that reads it at once, or a
     // failure on rank 0 that must not leave the others a checkpoint to find).
@@ -237,7 +283,8 @@ void CheckpointFile::check_layout(const CheckpointLayout& layout) const
 
 FramedStream CheckpointFile::open_piece(std::size_t index) const
 {
-    const std::filesystem::path piece_path = checkpoint_piece_path(path_, static_cast<int>(index));
+    const std::filesystem::path piece_path =
+        checkpoint_piece_path(path_, header_.pieces_write, static_cast<int>(index));
     FrameCheck check;
     try {
         check = check_framed(piece_path, checkpoint_format_version);
@@ -261,13 +308,6 @@ FramedStream CheckpointFile::open_piece(std::size_t index) const
                                           piece_path.filename().string(), number, step));
     }
     return piece;
-}
-
-void CheckpointFile::check_pieces() const
-{
-    for (std::size_t k = 1; k < header_.pieces.size(); ++k) {
-        static_cast<void>(open_piece(k));
-    }
 }
 
 template <int Dim>

@@ -7,7 +7,8 @@
 /// A run on one process writes one file. A run on N ranks writes it in N pieces
 /// (io/piece_archive.hpp, issue 15): every rank writes its own piece of the grid arrays, so no
 /// rank holds the whole grid. Rank 0's piece, with everything that is not a grid array, is the
-/// checkpoint's file; rank r's piece (r ≥ 1) is the file beside it with ".piece<r>" appended.
+/// checkpoint's file; rank r's piece (r ≥ 1) is the file beside it with ".<w>.piece<r>" appended
+/// (w: the write number, checkpoint_piece_path).
 /// A restart on M ranks reads on each rank the file and the pieces its block overlaps.
 ///
 /// Layout of the file (all integers little-endian):
@@ -83,11 +84,15 @@ struct CheckpointHeader {
     CheckpointLayout layout;
     std::string case_text; ///< the case as run when the checkpoint was written (case.toml)
     std::vector<CheckpointPiece> pieces; ///< one per rank of the run that wrote it
+    long pieces_write = 0;               ///< the write number in the pieces' file names
 };
 
-/// The file of piece `index` (≥ 1) of the checkpoint `path`: `path` with ".piece<index>".
+/// The file of piece `index` (≥ 1) of write number `write` of the checkpoint `path`: `path`
+/// with ".<write>.piece<index>". The write number is new for every write at one path, so that
+/// writing a checkpoint again (a step written again after a numerical failure rolled it back)
+/// never overwrites a piece that the checkpoint's file still names.
 [[nodiscard]] std::filesystem::path checkpoint_piece_path(const std::filesystem::path& path,
-                                                          int index);
+                                                          long write, int index);
 
 /// The CRC-32 of `bytes` (zlib: a Debian library, and the check every zip/png reader uses).
 [[nodiscard]] std::uint32_t crc32_of(std::string_view bytes);
@@ -119,10 +124,6 @@ public:
     /// calls it on its own (no communication); the caller must agree on the outcome.
     template <int Dim>
     void restore(Simulation<Dim>& sim, RunRecord& record) const;
-
-    /// Checks every piece file (one at a time) and throws CheckpointError for the first that is
-    /// missing, damaged or of another checkpoint: what a rank that could not restore from it met.
-    void check_pieces() const;
 
 private:
     /// The piece file `index` (≥ 1), checked (its frame, its CRC-32 against the pieces' table,

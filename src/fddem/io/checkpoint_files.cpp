@@ -83,15 +83,23 @@ void prune_checkpoints(const std::filesystem::path& run_directory, int keep)
         }
     }
     // The pieces of a run on several ranks (io/checkpoint.hpp) whose checkpoint is gone: those
-    // just pruned, and those of a checkpoint set aside as damaged.
+    // just pruned. Those of a checkpoint set aside as damaged stay with it (it may be the user's
+    // to mend).
     std::error_code error;
     std::vector<std::filesystem::path> orphans;
     for (const auto& file :
          std::filesystem::directory_iterator(checkpoint_directory(run_directory), error)) {
         const std::string name = file.path().filename().string();
-        const std::size_t at = name.find(piece_marker);
-        if (at != std::string::npos && name.find(".tmp.") == std::string::npos &&
-            !std::filesystem::exists(file.path().parent_path() / name.substr(0, at), error)) {
+        const std::size_t at = name.find(extension);
+        if (at == std::string::npos || name.find(piece_marker) == std::string::npos ||
+            name.find(".tmp.") != std::string::npos) {
+            continue;
+        }
+        const std::filesystem::path master =
+            file.path().parent_path() / name.substr(0, at + extension.size());
+        std::filesystem::path damaged = master;
+        damaged += ".damaged";
+        if (!std::filesystem::exists(master, error) && !std::filesystem::exists(damaged, error)) {
             orphans.push_back(file.path());
         }
     }

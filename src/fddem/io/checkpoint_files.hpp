@@ -2,7 +2,7 @@
 #pragma once
 /// Where a run keeps its checkpoints: RUN_DIR/checkpoints/checkpoint_<step>.ckpt (the step with
 /// ten digits, so names sort as steps do), the newest `checkpoint.keep` of them; a run on N
-/// ranks adds checkpoint_<step>.ckpt.piece<r> for r = 1 … N − 1 (io/checkpoint.hpp).
+/// ranks adds checkpoint_<step>.ckpt.<w>.piece<r> for r = 1 … N − 1 (io/checkpoint.hpp).
 
 #include <filesystem>
 #include <vector>
@@ -26,8 +26,9 @@ struct CheckpointEntry {
 [[nodiscard]] std::vector<CheckpointEntry>
 list_checkpoints(const std::filesystem::path& run_directory);
 
-/// Removes all but the newest `keep` (≥ 1) checkpoints, and the pieces (<name>.piece<r>,
-/// io/checkpoint.hpp) of checkpoints that are not there. Throws OutputError.
+/// Removes all but the newest `keep` (≥ 1) checkpoints, and the pieces (<name>.<w>.piece<r>,
+/// io/checkpoint.hpp) of checkpoints that are not there (neither as such nor set aside as
+/// damaged). Throws OutputError.
 void prune_checkpoints(const std::filesystem::path& run_directory, int keep);
 
 /// Removes the temporary files a process killed while writing left in `directory`

@@ -163,60 +163,63 @@ FrameCheck check_framed(const std::filesystem::path& path, std::uint64_t version
 }
 
 FramedStream::FramedStream(const std::filesystem::path& path, const FrameCheck& check)
-    : in_(open_checkpoint(path)), position_(start_bytes), end_(check.content_end)
+    : path_(path), position_(start_bytes), end_(check.content_end)
 {
-    in_.seekg(static_cast<std::streamoff>(start_bytes));
 }
 
-void FramedStream::read_bytes(char* data, std::uint64_t n)
+std::ifstream FramedStream::open() const
+{
+    std::ifstream in = open_checkpoint(path_);
+    in.seekg(static_cast<std::streamoff>(position_));
+    return in;
+}
+
+void FramedStream::read_bytes(std::ifstream& in, char* data, std::uint64_t n)
 {
     if (end_ - position_ < n) {
         throw CheckpointError(fmt::format("ends early (at byte {}, {} more wanted)", position_, n));
     }
-    if (!in_.read(data, static_cast<std::streamsize>(n))) {
+    if (!in.read(data, static_cast<std::streamsize>(n))) {
         throw CheckpointError("cannot be read");
     }
     position_ += n;
 }
 
-void FramedStream::read_entry(std::string_view name, std::uint64_t n)
+void FramedStream::read_entry(std::ifstream& in, std::string_view name, std::uint64_t n)
 {
     char length = 0;
-    read_bytes(&length, 1);
+    read_bytes(in, &length, 1);
     std::string found(static_cast<unsigned char>(length), '\0');
-    read_bytes(found.data(), found.size());
+    read_bytes(in, found.data(), found.size());
     if (found != name) {
         throw CheckpointError(fmt::format("holds '{}' where '{}' was expected", found, name));
     }
     entry_.resize(8 * n);
-    read_bytes(entry_.data(), entry_.size());
+    read_bytes(in, entry_.data(), entry_.size());
 }
 
 void FramedStream::operator()(std::string_view name, long& value)
 {
-    read_entry(name, 1);
+    std::ifstream in = open();
+    read_entry(in, name, 1);
     value = static_cast<long>(static_cast<std::int64_t>(get_le(entry_, 0, 8)));
 }
 
 void FramedStream::operator()(std::string_view name, std::vector<double>& values)
 {
-    read_entry(name, 1);
+    std::ifstream in = open();
+    read_entry(in, name, 1);
     const std::uint64_t n = get_le(entry_, 0, 8);
     if (n > (end_ - position_) / 8) {
         throw CheckpointError(
             fmt::format("has {} values of '{}' in {} bytes", n, name, end_ - position_));
     }
     entry_.resize(8 * n);
-    read_bytes(entry_.data(), entry_.size());
+    read_bytes(in, entry_.data(), entry_.size());
     values.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         values[k] = std::bit_cast<double>(get_le(entry_, 8 * k, 8));
     }
-}
-
-bool FramedStream::is_at_end()
-{
-    return position_ == end_;
 }
 
 } // namespace fddem

@@ -51,7 +51,9 @@ struct FramedBytes {
 [[nodiscard]] FrameCheck check_framed(const std::filesystem::path& path, std::uint64_t version);
 
 /// The named values of a checked framed file, read from disk one at a time (after the 16 bytes
-/// of the frame's start). Throws CheckpointError if a name, a size or the end does not match.
+/// of the frame's start). The file is opened for each value and closed again, so that a rank
+/// may read from more pieces than it may keep files open. Throws CheckpointError if a name, a
+/// size or the end does not match.
 class FramedStream {
 public:
     FramedStream(const std::filesystem::path& path, const FrameCheck& check);
@@ -61,14 +63,16 @@ public:
     /// A vector of doubles (as ArchiveWriter wrote it: a count, then the values).
     void operator()(std::string_view name, std::vector<double>& values);
     /// Whether every value before the trailer has been read.
-    [[nodiscard]] bool is_at_end();
+    [[nodiscard]] bool is_at_end() const noexcept { return position_ == end_; }
 
 private:
+    /// The file, at the next value.
+    [[nodiscard]] std::ifstream open() const;
     /// The next entry's name (checked against `name`) and its `n` 8-byte words, into entry_.
-    void read_entry(std::string_view name, std::uint64_t n);
-    void read_bytes(char* data, std::uint64_t n);
+    void read_entry(std::ifstream& in, std::string_view name, std::uint64_t n);
+    void read_bytes(std::ifstream& in, char* data, std::uint64_t n);
 
-    std::ifstream in_;
+    std::filesystem::path path_;
     std::uint64_t position_ = 0;
     std::uint64_t end_ = 0;
     std::string entry_; ///< the entry being decoded (reused)

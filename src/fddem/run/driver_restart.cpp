@@ -15,6 +15,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -49,6 +50,33 @@ std::pair<std::string, std::string> end_reason(const CaseConfig& config, const C
     return {"the flow is steady (time.steady_tolerance)", "time.min_end=…"};
 }
 
+/// The `reason` of the lowest rank that has one, on every rank ("" if none has), naming that
+/// rank if it is not rank 0 (a piece only another rank reads; collective).
+std::string first_reason(const Communicator& ranks, const std::string& reason)
+{
+    // Each rank's text, cut to `width` characters, as integers: one all-gather, only for a
+    // checkpoint that cannot be restored.
+    constexpr std::size_t width = 400;
+    std::vector<int> mine(width + 1, 0);
+    mine[0] = reason.empty() ? 0 : 1;
+    for (std::size_t k = 0; k < std::min(width, reason.size()); ++k) {
+        mine[k + 1] = static_cast<unsigned char>(reason[k]);
+    }
+    const std::vector<int> all = ranks.all_gather(mine);
+    for (int rank = 0; rank < ranks.size(); ++rank) {
+        const auto at = static_cast<std::size_t>(rank) * (width + 1);
+        if (all[at] == 0) {
+            continue;
+        }
+        std::string text;
+        for (std::size_t k = 1; k <= width && all[at + k] != 0; ++k) {
+            text.push_back(static_cast<char>(all[at + k]));
+        }
+        return rank == 0 ? text : fmt::format("{} (read on rank {})", text, rank);
+    }
+    return {};
+}
+
 } // namespace
 
 template <int Dim>
@@ -58,7 +86,8 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
     std::optional<CheckpointEntry> used;
     std::string checkpoint_case;
     // Every rank reads the checkpoint's file and the pieces its block overlaps
-    // (io/checkpoint.hpp); a checkpoint one rank cannot use is set aside by all of them.
+    // (io/checkpoint.hpp); a checkpoint one rank cannot use is set aside by all of them, with
+    // that rank's reason.
     for (const CheckpointEntry& entry : list_checkpoints(directory_)) {
         std::string reason;
         try {
@@ -68,23 +97,14 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
         } catch (const CheckpointError& e) {
             reason = e.what();
         }
-        // A rank that could not use it (the highest), or −1.
-        const int failed = static_cast<int>(ranks_.max(reason.empty() ? -1.0 : ranks_.rank()));
-        if (failed < 0) {
+        // Every rank takes the same checkpoint: the first that none of them refused.
+        reason = first_reason(ranks_, reason);
+        if (reason.empty()) {
             used = entry;
             break;
         }
         if (!is_writer()) {
             continue;
-        }
-        if (reason.empty()) {
-            // Another rank's piece: rank 0 reads every piece to say which and why.
-            try {
-                CheckpointFile(entry.path).check_pieces();
-                reason = fmt::format("could not be read on rank {}", failed);
-            } catch (const CheckpointError& e) {
-                reason = e.what();
-            }
         }
         damaged.push_back({entry.path, reason});
     }
