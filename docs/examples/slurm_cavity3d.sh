@@ -8,14 +8,15 @@
 # pieces of the field frames and checkpoints; rank 0 writes the other files. No rank holds the
 # whole grid (since the thirty-eighth session).
 #
-# Memory (docs/testing.md, "Memory estimate"; the estimate fddem prints at the start is the
-# one-process run's):
+# Memory (docs/testing.md, "Memory estimate"; fddem prints at the start the whole run's
+# estimate and, on several ranks, the largest block's and that of the ranks on each machine):
 #   one process:   48 MiB + 850 B per cell in 2D, 1700 B per cell in 3D;
 #   N processes:   each rank, rank 0 included, about 48 MiB + its block's cells at that rate
 #                  (measured: the 96³ cube on 2 ranks peaked at 529 and 493 MiB, one process
 #                  at 960 MiB; `bench/run.sh --no-base --mpi-memory 96`).
-# Example: a 256³ cavity (16.8 M cells) on 64 ranks: about 0.5 GiB per rank, 15 GiB for the 32
-# ranks of a node; --mem below leaves room for the MPI library's buffers.
+# Example: a 256³ cavity (16.8 M cells) on 64 ranks: fddem's estimate is about 0.55 GiB for the
+# largest block, 17 GiB for the 32 ranks of a node; --mem below leaves room for the MPI
+# library's buffers.
 #
 # Speed: not measured on a cluster. On one 2-core machine, 2 ranks ran a 128² cavity 3× slower
 # than one process (docs/parallel.md); blocks of at least ~10⁵ cells per rank are advised until

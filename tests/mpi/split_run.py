@@ -265,6 +265,9 @@ def main():
             if expected not in said:
                 sys.exit(f"a restart past a damaged piece on {n} processes does not say "
                          f"'{expected}':\n{said}")
+        aside = kept[-1].parent / (kept[-1].name + ".damaged" + piece[0].name[len(kept[-1].name):])
+        if not aside.exists():
+            sys.exit(f"the damaged checkpoint's piece was not set aside with it as {aside.name}")
     print(f"split runs on {n} processes match the one-process runs")
 
 

@@ -897,9 +897,10 @@ std::vector<KeySpec> case_schema()
 
     s.push_back(
         bound(positive(key("run", "max_memory", T::real, "B", "none",
-                           "The most memory the run may take: a run whose estimate (printed "
-                           "at its start) is larger stops before any work (exit status 2). "
-                           "None: the machine's memory (its cgroup limit, if lower).")),
+                           "The most memory the run may take on one machine: a run whose "
+                           "estimate (printed at its start; on several MPI ranks, that of the "
+                           "ranks on the machine) is larger stops before any work (exit status "
+                           "2). None: the machine's memory (its cgroup limit, if lower).")),
               &CaseConfig::run, &RunConfig::max_memory));
     s.push_back(
         bound(ranged(key("parallel", "ranks", T::integer_vector, none, "none",

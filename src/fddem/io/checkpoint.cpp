@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <system_error>
 
 namespace fddem {
@@ -121,25 +123,36 @@ CheckpointLayout checkpoint_layout(const Simulation<Dim>& sim)
 
 namespace {
 
-/// The write number of each piece file of the checkpoint `path` that is there (the <w> of
-/// "<name>.<w>.piece<r>"), with its path.
+/// The write number w of a piece file named "<master>.<w>.piece<r>" (both numbers all digits),
+/// none for any other name.
+std::optional<long> piece_write_number(std::string_view name, std::string_view master)
+{
+    const auto is_number = [](std::string_view text) {
+        return !text.empty() && text.size() < 18 &&
+               std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    if (!name.starts_with(master) || name.size() <= master.size() || name[master.size()] != '.') {
+        return std::nullopt;
+    }
+    const std::string_view rest = name.substr(master.size() + 1);
+    const std::size_t at = rest.find(".piece");
+    if (at == std::string_view::npos || !is_number(rest.substr(0, at)) ||
+        !is_number(rest.substr(at + 6))) {
+        return std::nullopt;
+    }
+    return std::stol(std::string(rest.substr(0, at)));
+}
+
+/// The write number of each piece file of the checkpoint `path` that is there, with its path.
 std::vector<std::pair<long, std::filesystem::path>>
 existing_pieces(const std::filesystem::path& path)
 {
     std::vector<std::pair<long, std::filesystem::path>> pieces;
-    const std::string prefix = path.filename().string() + ".";
+    const std::string master = path.filename().string();
     std::error_code error;
     for (const auto& file : std::filesystem::directory_iterator(path.parent_path(), error)) {
-        const std::string name = file.path().filename().string();
-        const std::size_t at = name.find(".piece");
-        if (!name.starts_with(prefix) || at == std::string::npos ||
-            name.find(".tmp.") != std::string::npos) {
-            continue;
-        }
-        try {
-            pieces.emplace_back(std::stol(name.substr(prefix.size(), at - prefix.size())),
-                                file.path());
-        } catch (const std::exception&) { // not a number: not one of ours
+        if (const auto write = piece_write_number(file.path().filename().string(), master)) {
+            pieces.emplace_back(*write, file.path());
         }
     }
     return pieces;
@@ -327,8 +340,17 @@ void CheckpointFile::restore(Simulation<Dim>& sim, RunRecord& record) const
         }
         FramedStream* stream =
             streams.emplace_back(std::make_unique<FramedStream>(open_piece(k))).get();
-        others.push_back({box, [stream](std::string_view name, std::vector<double>& values) {
-                              (*stream)(name, values);
+        const std::string file =
+            checkpoint_piece_path(path_, header_.pieces_write, static_cast<int>(k))
+                .filename()
+                .string();
+        others.push_back({box, [stream, file](std::string_view name, std::vector<double>& values) {
+                              try {
+                                  (*stream)(name, values);
+                              } catch (const CheckpointError& e) {
+                                  throw CheckpointError(
+                                      fmt::format("has a piece, {}, that {}", file, e.what()));
+                              }
                           }});
     }
 

@@ -108,6 +108,33 @@ void prune_checkpoints(const std::filesystem::path& run_directory, int keep)
     }
 }
 
+std::filesystem::path set_checkpoint_aside(const std::filesystem::path& path)
+{
+    const std::string name = path.filename().string();
+    std::filesystem::path aside = path;
+    aside += ".damaged";
+    std::error_code error;
+    std::filesystem::rename(path, aside, error);
+    if (error) {
+        throw OutputError("cannot rename " + path.string() + ": " + error.message());
+    }
+    std::vector<std::filesystem::path> pieces;
+    for (const auto& file : std::filesystem::directory_iterator(path.parent_path(), error)) {
+        const std::string other = file.path().filename().string();
+        if (other.starts_with(name + ".") && !other.starts_with(name + ".damaged") &&
+            other.find(piece_marker) != std::string::npos &&
+            other.find(".tmp.") == std::string::npos) {
+            pieces.push_back(file.path());
+        }
+    }
+    for (const auto& piece : pieces) {
+        std::filesystem::path renamed = aside;
+        renamed += piece.filename().string().substr(name.size());
+        std::filesystem::rename(piece, renamed, error);
+    }
+    return aside;
+}
+
 void remove_stale_temporaries(const std::filesystem::path& directory)
 {
     std::error_code error;

@@ -31,6 +31,12 @@ list_checkpoints(const std::filesystem::path& run_directory);
 /// damaged). Throws OutputError.
 void prune_checkpoints(const std::filesystem::path& run_directory, int keep);
 
+/// Renames a checkpoint that cannot be used to "<name>.damaged", and its pieces
+/// ("<name>.<w>.piece<r>") to "<name>.damaged.<w>.piece<r>", so that a new write of the same
+/// step neither reads nor removes them; returns the new name of the checkpoint's file. Throws
+/// OutputError if the file cannot be renamed.
+std::filesystem::path set_checkpoint_aside(const std::filesystem::path& path);
+
 /// Removes the temporary files a process killed while writing left in `directory`
 /// (io/atomic_file names them <name>.tmp.<pid>).
 void remove_stale_temporaries(const std::filesystem::path& directory);

@@ -120,7 +120,7 @@ bool is_run_output(const std::string& relative)
         R"(fields/fields_[0-9]+\.p?vtr|particles/particles_[0-9]+\.p?vtp|)"
         R"(fields/fields_[0-9]+/fields_[0-9]+_[0-9]+\.vtr|)"
         R"(particles/particles_[0-9]+/particles_[0-9]+_[0-9]+\.vtp|samples/[^/]+\.csv|)"
-        R"(checkpoints/checkpoint_[0-9]+\.ckpt(\.damaged|\.[0-9]+\.piece[0-9]+)?|\.fddem-write-test)(\.tmp\.[0-9]+)?)");
+        R"(checkpoints/checkpoint_[0-9]+\.ckpt(\.damaged)?(\.[0-9]+\.piece[0-9]+)?|\.fddem-write-test)(\.tmp\.[0-9]+)?)");
     return std::regex_match(relative, outputs);
 }
 

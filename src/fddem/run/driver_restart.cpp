@@ -11,6 +11,7 @@
 #include "fddem/run/driver.hpp"
 #include "fddem/run/field_frames.hpp"
 #include "fddem/run/memory_estimate.hpp"
+#include "fddem/run/rank_reasons.hpp"
 #include "fddem/run/run_messages.hpp"
 
 #include <fmt/format.h>
@@ -50,33 +51,6 @@ std::pair<std::string, std::string> end_reason(const CaseConfig& config, const C
     return {"the flow is steady (time.steady_tolerance)", "time.min_end=…"};
 }
 
-/// The `reason` of the lowest rank that has one, on every rank ("" if none has), naming that
-/// rank if it is not rank 0 (a piece only another rank reads; collective).
-std::string first_reason(const Communicator& ranks, const std::string& reason)
-{
-    // Each rank's text, cut to `width` characters, as integers: one all-gather, only for a
-    // checkpoint that cannot be restored.
-    constexpr std::size_t width = 400;
-    std::vector<int> mine(width + 1, 0);
-    mine[0] = reason.empty() ? 0 : 1;
-    for (std::size_t k = 0; k < std::min(width, reason.size()); ++k) {
-        mine[k + 1] = static_cast<unsigned char>(reason[k]);
-    }
-    const std::vector<int> all = ranks.all_gather(mine);
-    for (int rank = 0; rank < ranks.size(); ++rank) {
-        const auto at = static_cast<std::size_t>(rank) * (width + 1);
-        if (all[at] == 0) {
-            continue;
-        }
-        std::string text;
-        for (std::size_t k = 1; k <= width && all[at + k] != 0; ++k) {
-            text.push_back(static_cast<char>(all[at + k]));
-        }
-        return rank == 0 ? text : fmt::format("{} (read on rank {})", text, rank);
-    }
-    return {};
-}
-
 } // namespace
 
 template <int Dim>
@@ -89,7 +63,7 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
     // (io/checkpoint.hpp); a checkpoint one rank cannot use is set aside by all of them, with
     // that rank's reason.
     for (const CheckpointEntry& entry : list_checkpoints(directory_)) {
-        std::string reason;
+        std::optional<std::string> reason;
         try {
             const CheckpointFile file(entry.path);
             file.restore(sim_, record_);
@@ -98,15 +72,15 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
             reason = e.what();
         }
         // Every rank takes the same checkpoint: the first that none of them refused.
-        reason = first_reason(ranks_, reason);
-        if (reason.empty()) {
+        reason = first_reason(ranks_, reason, "read on rank");
+        if (!reason) {
             used = entry;
             break;
         }
         if (!is_writer()) {
             continue;
         }
-        damaged.push_back({entry.path, reason});
+        damaged.push_back({entry.path, *reason});
     }
     if (ranks_.size() > 1 && !is_writer()) {
         if (!used) {
@@ -147,9 +121,7 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
 
     // Nothing was written so far; from here on the run directory is brought back to the step.
     for (const Damaged& file : damaged) {
-        fs::path aside = file.path;
-        aside += ".damaged";
-        fs::rename(file.path, aside);
+        const fs::path aside = set_checkpoint_aside(file.path); // with its pieces
         monitor_.message(fmt::format("fddem: checkpoint {} {}; set aside as {}", file.path.string(),
                                      file.reason, aside.filename().string()));
     }

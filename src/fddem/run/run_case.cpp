@@ -7,6 +7,7 @@
 #include "fddem/io/run_directory.hpp"
 #include "fddem/io/run_lock.hpp"
 #include "fddem/run/memory_estimate.hpp"
+#include "fddem/run/rank_reasons.hpp"
 
 #include <fmt/format.h>
 
@@ -25,7 +26,20 @@ RunResult drive(const CaseConfig& config, const fs::path& directory, RunMonitor&
                 const Communicator& ranks, const Go& go)
 {
     // Before anything is allocated: a grid that does not fit stops here (exit status 2).
-    check_run_memory(config, run_memory_limit(config), ranks.size(), ranks.ranks_on_this_node());
+    // Each rank checks its own machine (their ranks and memory may differ); all stop alike.
+    // (A layout that cannot be made fails alike on every rank, with its own key.)
+    std::optional<std::string> failure;
+    std::string key = "domain.cells";
+    try {
+        check_run_memory(config, run_memory_limit(config), ranks.size(),
+                         ranks.ranks_on_this_node());
+    } catch (const InputError& e) {
+        failure = e.what();
+        key = e.key();
+    }
+    if (const auto said = first_reason(ranks, failure, "on the machine of rank")) {
+        throw InputError(config.source_file, 0, key, *said);
+    }
     if (config.domain.dimension == 2) {
         Driver<2> driver(config, directory, monitor, ranks);
         return go(driver);

@@ -524,6 +524,32 @@ TEST(CheckpointFiles, ListedNewestFirstAndPrunedToTheNewest)
     fs::remove_all(run);
 }
 
+TEST(CheckpointFiles, PiecesArePrunedWithTheirCheckpointAndSetAsideWithIt)
+{
+    // A run on several ranks (io/checkpoint.hpp): checkpoint_<step>.ckpt.<w>.piece<r>.
+    const fs::path run = scratch("pieces");
+    const fs::path dir = checkpoint_directory(run);
+    fs::create_directories(dir);
+    for (const long step : {5L, 20L, 100L}) {
+        write_bytes(checkpoint_path(run, step), "x");
+        for (const char* piece : {".1.piece1", ".1.piece2"}) {
+            write_bytes(dir / (checkpoint_path(run, step).filename().string() + piece), "p");
+        }
+    }
+    write_bytes(dir / "checkpoint_0000000007.ckpt.3.piece1", "orphan"); // its checkpoint is gone
+    const fs::path aside = set_checkpoint_aside(checkpoint_path(run, 100));
+    EXPECT_EQ(aside.filename(), "checkpoint_0000000100.ckpt.damaged");
+    EXPECT_TRUE(fs::exists(dir / "checkpoint_0000000100.ckpt.damaged.1.piece1"));
+    EXPECT_TRUE(fs::exists(dir / "checkpoint_0000000100.ckpt.damaged.1.piece2"));
+    EXPECT_FALSE(fs::exists(dir / "checkpoint_0000000100.ckpt.1.piece1"));
+    prune_checkpoints(run, 1); // keeps step 20
+    EXPECT_FALSE(fs::exists(dir / "checkpoint_0000000005.ckpt.1.piece1"));
+    EXPECT_FALSE(fs::exists(dir / "checkpoint_0000000007.ckpt.3.piece1"));
+    EXPECT_TRUE(fs::exists(dir / "checkpoint_0000000020.ckpt.1.piece2"));
+    EXPECT_TRUE(fs::exists(dir / "checkpoint_0000000100.ckpt.damaged.1.piece1"));
+    fs::remove_all(run);
+}
+
 TEST(CheckpointFormat, DocsOutputFilesStateTheVersionTheProgramWrites)
 {
     // Issue 17: docs/output-files.md said version 2 while fddem wrote 3.
