@@ -115,8 +115,8 @@ TEST(SplitFluid, CavityMatchesOneProcess)
 }
 
 // The multigrid's first coarse level merges blocks of the whole grid, some of which straddle
-// two ranks (odd block starts: 26 cells over 2 or 4 ranks along x start a block at 13), and
-// every rank then solves the same whole coarse hierarchy.
+// two ranks (odd block starts: 26 cells over 2 or 4 ranks along x start a block at 13); the
+// coarse levels are split over the ranks (linsolve/split_multigrid.hpp).
 TEST(SplitFluid, CavityWithMultigridMatchesOneProcess)
 {
     auto bc = BoundaryConditions<2>::closed_box();

@@ -19,15 +19,12 @@
 
 #include "fddem/fluid/momentum.hpp"
 
-#include "fddem/core/errors.hpp"
 #include "fddem/grid/halo_exchange.hpp"
 #include "fddem/grid/loops.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
-#include <span>
 #include <type_traits>
 
 namespace fddem {
@@ -456,11 +453,11 @@ StencilView<Dim> fine_level(const MacGrid<Dim>& grid, const BoundaryConditions<D
 /// coarse.x = 0: one coarse row at a time, reading its fine rows with unit stride (cheaper than
 /// restrict_sum's call per unknown). On a split grid `fine` is this rank's part of the whole
 /// level (`part`): only the blocks that meet it are written, and coarse.rhs and coarse.x must
-/// be zero elsewhere.
+/// be zero elsewhere. `coarse`'s arrays hold the coarse unknowns from `origin` on.
 template <int Dim>
 void restrict_residual(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
                        const ScaledSystem<Dim>& scaled, const double* a_p, double alpha,
-                       const double* u, CoarseLevel<Dim>& coarse)
+                       const double* u, const Index<Dim>& origin, CoarseLevel<Dim>& coarse)
 {
     // The coarse rows the part meets, and the coarse columns [first, last] along x.
     Box<Dim> coarse_rows = coarse_part_box<Dim>(part, fine.n);
@@ -470,7 +467,7 @@ void restrict_residual(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
     for_each_index(
         coarse_rows,
         [&](const Index<Dim>& coarse_row) {
-            const std::size_t out = coarse.offset(coarse_row);
+            const std::size_t out = coarse.offset(coarse_row - origin);
             std::fill_n(coarse.rhs.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
             std::fill_n(coarse.x.begin() + static_cast<std::ptrdiff_t>(out), width, 0.0);
             for (int member = 0; member < (1 << (Dim - 1)); ++member) {
@@ -495,10 +492,12 @@ void restrict_residual(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
         (std::size_t{1} << Dim) * width);
 }
 
-/// u += P coarse.x: each fine unknown takes its block's correction.
+/// u += P coarse.x: each fine unknown takes its block's correction (`coarse`'s arrays hold the
+/// coarse unknowns from `origin` on).
 template <int Dim>
 void add_coarse_correction(const Box<Dim>& box, const StencilView<Dim>& fine,
-                           const LevelPart<Dim>& part, const CoarseLevel<Dim>& coarse, double* u)
+                           const LevelPart<Dim>& part, const Index<Dim>& origin,
+                           const CoarseLevel<Dim>& coarse, double* u)
 {
     for_each_row(box, [&](const Index<Dim>& row) {
         Index<Dim> i = row - box.lo;
@@ -506,7 +505,7 @@ void add_coarse_correction(const Box<Dim>& box, const StencilView<Dim>& fine,
         Index<Dim> at = i + part.offset; // the index in the whole level
         for (int x = 0; x < fine.n[0]; ++x) {
             at[0] = x + part.offset[0];
-            u[row_offset + x] += coarse.x[coarse.offset(coarse_index<Dim>(at))];
+            u[row_offset + x] += coarse.x[coarse.offset(coarse_index<Dim>(at) - origin)];
         }
     });
 }
@@ -522,146 +521,22 @@ Box<Dim> whole_unknown_faces(const MacGrid<Dim>& grid, int axis)
     return box;
 }
 
-/// Every rank's coarse_part_box (linsolve/aggregation_multigrid.hpp), in rank order (one gather of
-/// 2·Dim integers a rank).
-template <int Dim>
-std::vector<Box<Dim>> gather_part_boxes(const Communicator& ranks, const Box<Dim>& mine)
-{
-    std::vector<int> bounds(mine.lo.begin(), mine.lo.end());
-    bounds.insert(bounds.end(), mine.hi.begin(), mine.hi.end());
-    const std::vector<int> all = ranks.all_gather(bounds);
-    std::vector<Box<Dim>> boxes(static_cast<std::size_t>(ranks.size()));
-    for (std::size_t r = 0; r < boxes.size(); ++r) {
-        for (std::size_t d = 0; d < static_cast<std::size_t>(Dim); ++d) {
-            boxes[r].lo[d] = all[r * 2 * Dim + d];
-            boxes[r].hi[d] = all[r * 2 * Dim + Dim + d];
-        }
-    }
-    return boxes;
-}
-
-/// The rank that solves the coarse levels of a split grid's momentum multigrid: the last, so
-/// that rank 0, which gathers the outputs, does not also gather the coarse levels.
-int coarse_root(const Communicator& ranks)
-{
-    return ranks.size() - 1;
-}
-
-/// Adds up the ranks' shares of some arrays of the first coarse level `layout` (each rank's
-/// share zero outside its box, `boxes[rank]`) on coarse_root alone, in rank order, in place
-/// (the other ranks' arrays keep their own share). Each rank sends its box's values to the root
-/// in one personalised all-to-all (Communicator::all_to_all) in which the others receive
-/// nothing. Until the twenty-seventh session every rank received every box (an all-gather) and
-/// summed and solved the whole level itself: each rank received about the whole level, a
-/// traffic that grows with the number of ranks. The root's totals are that sum's bit for bit.
-template <int Dim>
-void sum_coarse_parts_on_root(const Communicator& ranks, std::span<const Box<Dim>> boxes,
-                              const CoarseLevel<Dim>& layout,
-                              std::span<std::vector<double>* const> arrays)
-{
-    const auto me = static_cast<std::size_t>(ranks.rank());
-    const bool is_root = ranks.rank() == coarse_root(ranks);
-    std::vector<int> counts;
-    for (const Box<Dim>& box : boxes) {
-        const std::size_t count = box.size() * arrays.size();
-        if (count > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-            throw InternalError("sum_coarse_parts_on_root: a part of more than 2^31 values");
-        }
-        counts.push_back(static_cast<int>(count));
-    }
-    std::vector<double> mine;
-    mine.reserve(static_cast<std::size_t>(counts[me]));
-    for (const std::vector<double>* values : arrays) {
-        for_each_cell_in_vtk_order<Dim>(
-            boxes[me], [&](const Index<Dim>& c) { mine.push_back((*values)[layout.offset(c)]); });
-    }
-    std::vector<int> send_counts(boxes.size(), 0);
-    send_counts[static_cast<std::size_t>(coarse_root(ranks))] = counts[me];
-    const std::vector<int> receive_counts = is_root ? counts : std::vector<int>(boxes.size(), 0);
-    std::size_t total = 0;
-    for (const int c : receive_counts) {
-        total += static_cast<std::size_t>(c);
-    }
-    std::vector<double> all(total);
-    ranks.all_to_all(mine, send_counts, all, receive_counts);
-    if (!is_root) {
-        return;
-    }
-    for (std::vector<double>* values : arrays) {
-        std::fill(values->begin(), values->end(), 0.0);
-    }
-    std::size_t at = 0;
-    for (const Box<Dim>& box : boxes) {
-        for (std::vector<double>* values : arrays) {
-            for_each_cell_in_vtk_order<Dim>(
-                box, [&](const Index<Dim>& c) { (*values)[layout.offset(c)] += all[at++]; });
-        }
-    }
-}
-
-/// coarse_root's values of `x` over each rank's box, `boxes[rank]`, sent to that rank into its
-/// `x` (one personalised all-to-all in which the root alone sends): what the rank's faces read
-/// of the coarse correction (add_coarse_correction).
-template <int Dim>
-void scatter_coarse_parts_from_root(const Communicator& ranks, std::span<const Box<Dim>> boxes,
-                                    const CoarseLevel<Dim>& layout, std::vector<double>& x)
-{
-    const auto me = static_cast<std::size_t>(ranks.rank());
-    const bool is_root = ranks.rank() == coarse_root(ranks);
-    std::vector<int> send_counts(boxes.size(), 0);
-    std::vector<double> parts;
-    if (is_root) {
-        for (std::size_t r = 0; r < boxes.size(); ++r) {
-            send_counts[r] = static_cast<int>(boxes[r].size());
-            for_each_cell_in_vtk_order<Dim>(
-                boxes[r], [&](const Index<Dim>& c) { parts.push_back(x[layout.offset(c)]); });
-        }
-    }
-    std::vector<int> receive_counts(boxes.size(), 0);
-    receive_counts[static_cast<std::size_t>(coarse_root(ranks))] =
-        static_cast<int>(boxes[me].size());
-    std::vector<double> part(boxes[me].size());
-    ranks.all_to_all(parts, send_counts, part, receive_counts);
-    std::size_t at = 0;
-    for_each_cell_in_vtk_order<Dim>(boxes[me],
-                                    [&](const Index<Dim>& c) { x[layout.offset(c)] = part[at++]; });
-}
-
-/// The multigrid's levels below `fine`. On a split grid (`part` a part of the whole level)
-/// every rank builds its share of the whole first coarse level, the shares are summed on
-/// coarse_root (sum_coarse_parts_on_root, `boxes` every rank's share), and the root alone
-/// holds the whole hierarchy below it and solves it (the levels are 2^Dim and more times
-/// smaller than the fine grid, and the result is the one-process hierarchy, up to the order of
-/// additions, whatever the layout). The other ranks keep the first level for their share of the
-/// restriction and the correction.
+/// The multigrid's levels below `fine`: on one process the whole hierarchy
+/// (build_coarse_levels), on a split grid the split levels and the root's gathered level
+/// (linsolve/split_multigrid.hpp; `part` is where this rank's part of the whole level sits).
 template <int Dim>
 void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
-                  const LevelPart<Dim>& part, std::span<const Box<Dim>> boxes,
-                  std::vector<CoarseLevel<Dim>>& levels)
+                  const LevelPart<Dim>& part, MomentumSystem<Dim>& system)
 {
     if (!grid.communicator().uses_mpi()) {
-        build_coarse_levels(fine, levels);
+        build_coarse_levels(fine, system.coarse_levels);
         return;
     }
     if (coarse_extent<Dim>(part.whole_n) == part.whole_n) {
-        levels.clear();
+        system.split_levels.levels.clear(); // every extent is 1: nothing to merge
         return;
     }
-    if (levels.empty()) {
-        levels.emplace_back();
-    }
-    CoarseLevel<Dim>& first = levels.front();
-    aggregate_part(fine, part, first);
-    std::vector<std::vector<double>*> arrays{&first.diagonal};
-    for (auto& a : first.a_nb) {
-        arrays.push_back(&a);
-    }
-    sum_coarse_parts_on_root<Dim>(grid.communicator(), boxes, first, arrays);
-    if (grid.communicator().rank() == coarse_root(grid.communicator())) {
-        extend_coarse_levels(levels);
-    } else {
-        levels.resize(1);
-    }
+    build_split_levels<Dim>(grid.communicator(), fine, part, system.split_levels);
 }
 
 /// max |s − u + Σ c_nb u_nb| over `box`, all ranks: the residual over a_P/α (with α = 1 the
@@ -728,36 +603,32 @@ MomentumSolveResult solve_momentum_to(const MacGrid<Dim>& grid, const BoundaryCo
     const Box<Dim> whole = whole_unknown_faces(grid, axis);
     const LevelPart<Dim> part{box.lo - whole.lo, whole.hi - whole.lo};
     const bool is_split = grid.communicator().uses_mpi();
-    const std::vector<Box<Dim>> boxes =
-        is_split ? gather_part_boxes<Dim>(grid.communicator(), coarse_part_box<Dim>(part, fine.n))
-                 : std::vector<Box<Dim>>();
     // Rebuilt at every solve: a hierarchy kept for the whole time step (the coefficients
     // change between outer iterations) made the eighteen-disk case blow up at a collision.
-    build_levels<Dim>(grid, fine, part, boxes, system.coarse_levels);
+    build_levels<Dim>(grid, fine, part, system);
+    const bool has_coarse_levels =
+        is_split ? !system.split_levels.levels.empty() : !system.coarse_levels.empty();
     const int pre_sweeps = settings.sweeps / 2;
     const int post_sweeps = settings.sweeps - pre_sweeps;
     do {
         for (int cycle = 0; cycle < settings.cycles; ++cycle) {
             sweeps(grid, box, scaled, pre_sweeps, false, u);
-            if (!system.coarse_levels.empty()) {
-                CoarseLevel<Dim>& coarse = system.coarse_levels.front();
+            if (has_coarse_levels) {
                 if (is_split) {
-                    std::fill(coarse.rhs.begin(), coarse.rhs.end(), 0.0);
-                    std::fill(coarse.x.begin(), coarse.x.end(), 0.0);
-                }
-                restrict_residual(fine, part, scaled, system.a_p.data(), alpha, u.data(), coarse);
-                if (is_split) {
-                    std::vector<double>* const rhs[] = {&coarse.rhs};
-                    sum_coarse_parts_on_root<Dim>(grid.communicator(), boxes, coarse, rhs);
-                    if (grid.communicator().rank() == coarse_root(grid.communicator())) {
-                        coarse_v_cycle(system.coarse_levels, 0, 2);
-                    }
-                    scatter_coarse_parts_from_root<Dim>(grid.communicator(), boxes, coarse,
-                                                        coarse.x);
+                    SplitLevel<Dim>& coarse = system.split_levels.levels.front();
+                    std::fill(coarse.local.rhs.begin(), coarse.local.rhs.end(), 0.0);
+                    restrict_residual<Dim>(fine, part, scaled, system.a_p.data(), alpha, u.data(),
+                                           coarse.stored.lo, coarse.local);
+                    split_v_cycle(grid.communicator(), system.split_levels, 2);
+                    add_coarse_correction<Dim>(box, fine, part, coarse.stored.lo, coarse.local,
+                                               u.data());
                 } else {
+                    CoarseLevel<Dim>& coarse = system.coarse_levels.front();
+                    restrict_residual<Dim>(fine, part, scaled, system.a_p.data(), alpha, u.data(),
+                                           Index<Dim>{}, coarse);
                     coarse_v_cycle(system.coarse_levels, 0, 2);
+                    add_coarse_correction<Dim>(box, fine, part, Index<Dim>{}, coarse, u.data());
                 }
-                add_coarse_correction(box, fine, part, coarse, u.data());
                 HaloExchange<Dim>(grid).fill(u);
             }
             sweeps(grid, box, scaled, post_sweeps, false, u);

@@ -7,6 +7,7 @@
 #include "fddem/fluid/boundary_conditions.hpp"
 #include "fddem/fluid/fluid_state.hpp"
 #include "fddem/linsolve/aggregation_multigrid.hpp"
+#include "fddem/linsolve/split_multigrid.hpp"
 
 #include <array>
 
@@ -37,6 +38,7 @@ struct MomentumSystem {
     GridArray<Dim> scaled_source;
     std::array<GridArray<Dim>, 2 * Dim> scaled_nb;
     std::vector<CoarseLevel<Dim>> coarse_levels; ///< the multigrid's, rebuilt every solve
+    SplitHierarchy<Dim> split_levels;            ///< the same on a grid split over ranks
 };
 
 struct MomentumSettings {

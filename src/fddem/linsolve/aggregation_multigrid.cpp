@@ -165,17 +165,18 @@ void reset_coarse(const Index<Dim>& fine_n, const std::array<bool, Dim>& periodi
 }
 
 /// Adds fine unknown `at` (flat offset `fo`; `at` and `n` are whole-level indices and extent)
-/// to its block's coarse unknown (flat offset `co`): its diagonal, its links inside the block
-/// taken off the diagonal, its links to the next blocks as theirs.
+/// to its block's coarse unknown (flat offset `co` in `coarse`'s arrays): its diagonal, its
+/// links inside the block taken off the diagonal, its links to the next blocks as theirs.
 template <int Dim>
 void add_member(const StencilView<Dim>& fine, std::ptrdiff_t fo, const Index<Dim>& at,
                 const Index<Dim>& n, std::size_t co, CoarseLevel<Dim>& coarse)
 {
+    const Index<Dim> coarse_n = coarse_extent<Dim>(n);
     coarse.diagonal[co] += fine.diagonal[fo] * fine.diagonal_scale;
     for (std::size_t d = 0; d < at.size(); ++d) {
         for (int side = 0; side < 2; ++side) {
             const double a = fine.a_nb[2 * d + static_cast<std::size_t>(side)][fo];
-            switch (classify_link(at[d], side, n[d], coarse.n[d], fine.periodic[d])) {
+            switch (classify_link(at[d], side, n[d], coarse_n[d], fine.periodic[d])) {
             case Link::inside_block:
                 coarse.diagonal[co] -= a;
                 break;
@@ -296,16 +297,15 @@ void extend_coarse_levels(std::vector<CoarseLevel<Dim>>& levels, std::size_t coa
 
 template <int Dim>
 void aggregate_part(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
-                    CoarseLevel<Dim>& coarse)
+                    const Index<Dim>& origin, CoarseLevel<Dim>& coarse)
 {
-    reset_coarse<Dim>(part.whole_n, fine.periodic, coarse);
     // The blocks that meet the part, one coarse unknown per call: each writes only its own
     // coefficients, from the members this part holds.
     const Box<Dim> blocks = coarse_part_box<Dim>(part, fine.n);
     for_each_index(
         blocks,
         [&](const Index<Dim>& c) {
-            const std::size_t co = coarse.offset(c);
+            const std::size_t co = coarse.offset(c - origin);
             for_each_in_block<Dim>(c, part.whole_n, [&](const Index<Dim>& at) {
                 Index<Dim> i{};
                 for (std::size_t d = 0; d < i.size(); ++d) {
@@ -365,8 +365,10 @@ template void build_coarse_levels<3>(const StencilView<3>&, std::vector<CoarseLe
                                      std::size_t);
 template void extend_coarse_levels<2>(std::vector<CoarseLevel<2>>&, std::size_t);
 template void extend_coarse_levels<3>(std::vector<CoarseLevel<3>>&, std::size_t);
-template void aggregate_part<2>(const StencilView<2>&, const LevelPart<2>&, CoarseLevel<2>&);
-template void aggregate_part<3>(const StencilView<3>&, const LevelPart<3>&, CoarseLevel<3>&);
+template void aggregate_part<2>(const StencilView<2>&, const LevelPart<2>&, const Index<2>&,
+                                CoarseLevel<2>&);
+template void aggregate_part<3>(const StencilView<3>&, const LevelPart<3>&, const Index<3>&,
+                                CoarseLevel<3>&);
 template void coarse_v_cycle<2>(std::vector<CoarseLevel<2>>&, std::size_t, int);
 template void coarse_v_cycle<3>(std::vector<CoarseLevel<3>>&, std::size_t, int);
 

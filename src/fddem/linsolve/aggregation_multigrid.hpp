@@ -92,11 +92,14 @@ template <int Dim>
     return n;
 }
 
+/// The size of a level small enough to be the coarsest (swept to convergence).
+inline constexpr std::size_t coarsest_level_size = 64;
+
 /// Builds `levels` below `fine`: each the Galerkin aggregation of the one above, until a level
 /// has at most `coarsest_size` unknowns or cannot shrink. Reuses the levels' storage.
 template <int Dim>
 void build_coarse_levels(const StencilView<Dim>& fine, std::vector<CoarseLevel<Dim>>& levels,
-                         std::size_t coarsest_size = 64);
+                         std::size_t coarsest_size = coarsest_level_size);
 
 /// Where one process's part of a fine level split over several processes sits: its unknowns
 /// are the whole level's [offset, offset + n) (StencilView::n is the part's extent), and the
@@ -123,18 +126,21 @@ template <int Dim>
     return box;
 }
 
-/// Sets `coarse` to the whole first coarse level, R A P, of the level `fine` is a part of, but
-/// holding only the terms of this part's unknowns (zero elsewhere). Summed over the processes
-/// (in any fixed order), these shares are build_coarse_levels' first level of the whole level,
-/// up to the order of the additions.
+/// Adds to `coarse` the terms of R A P that this part's unknowns give: the coarse level below
+/// the level `fine` is a part of, written at the blocks the part meets (coarse_part_box) and
+/// nowhere else. `coarse`'s arrays hold the coarse unknowns from `origin` on (coarse.n their
+/// extent; the whole coarse extent is coarse_extent(part.whole_n)), and must hold those blocks.
+/// Summed over the parts (in any fixed order), these shares are build_coarse_levels' level
+/// below the whole level, up to the order of the additions.
 template <int Dim>
 void aggregate_part(const StencilView<Dim>& fine, const LevelPart<Dim>& part,
-                    CoarseLevel<Dim>& coarse);
+                    const Index<Dim>& origin, CoarseLevel<Dim>& coarse);
 
 /// Builds levels[1], levels[2], … below levels[0], which the caller has built, as
 /// build_coarse_levels does below its fine level. `levels` must not be empty.
 template <int Dim>
-void extend_coarse_levels(std::vector<CoarseLevel<Dim>>& levels, std::size_t coarsest_size = 64);
+void extend_coarse_levels(std::vector<CoarseLevel<Dim>>& levels,
+                          std::size_t coarsest_size = coarsest_level_size);
 
 /// One V-cycle on levels[k], levels[k+1], …: approximately solves levels[k]'s system for
 /// levels[k].x from levels[k].rhs, starting from x = 0; `sweeps` Gauss–Seidel sweeps before

@@ -1,0 +1,325 @@
+// SPDX-License-Identifier: MIT
+#include "fddem/linsolve/split_multigrid.hpp"
+
+#include "fddem/core/errors.hpp"
+#include "fddem/grid/loops.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace fddem {
+
+namespace {
+
+/// Whether `level` is smoothed split and has a split level below it whose ranks own
+/// `next_boxes` (the conditions in split_multigrid.hpp).
+template <int Dim>
+bool stays_split(const SplitLevel<Dim>& level, const std::vector<Box<Dim>>& next_boxes)
+{
+    Box<Dim> whole;
+    whole.hi = level.whole_n;
+    if (whole.size() <= coarsest_level_size || coarse_extent<Dim>(level.whole_n) == level.whole_n) {
+        return false;
+    }
+    for (int d = 0; d < Dim; ++d) {
+        const auto sd = static_cast<std::size_t>(d);
+        if (level.periodic[sd] && level.whole_n[sd] % 2 != 0) {
+            return false;
+        }
+        for (const Box<Dim>& box : next_boxes) {
+            if (box.extent(d) < 1) {
+                return false; // some rank would own nothing
+            }
+        }
+    }
+    return true;
+}
+
+/// Adds the ranks' shares of the level's operator up on the owners.
+template <int Dim>
+void accumulate_operator(const Communicator& ranks, SplitLevel<Dim>& level)
+{
+    accumulate_ghosts(ranks, level, level.local.diagonal);
+    for (auto& a : level.local.a_nb) {
+        accumulate_ghosts(ranks, level, a);
+    }
+}
+
+template <int Dim>
+std::array<std::size_t, Dim> strides(const SplitLevel<Dim>& level) noexcept
+{
+    std::array<std::size_t, Dim> stride{};
+    std::size_t s = 1;
+    for (std::size_t d = 0; d < stride.size(); ++d) {
+        stride[d] = s;
+        s *= static_cast<std::size_t>(level.local.n[d]);
+    }
+    return stride;
+}
+
+/// rhs − A x at stored offset `o` of an owned unknown (its neighbours' ghosts filled; the links
+/// out of a bounded side are zero).
+template <int Dim>
+double residual(const CoarseLevel<Dim>& local, const std::array<std::size_t, Dim>& stride,
+                std::size_t o) noexcept
+{
+    double product = local.diagonal[o] * local.x[o];
+    for (std::size_t d = 0; d < stride.size(); ++d) {
+        product -= local.a_nb[2 * d][o] * local.x[o - stride[d]];
+        product -= local.a_nb[2 * d + 1][o] * local.x[o + stride[d]];
+    }
+    return local.rhs[o] - product;
+}
+
+/// A red–black Gauss–Seidel sweep over the owned unknowns, red (even index sum) first or black
+/// first, the ghosts filled after each colour.
+template <int Dim>
+void relax(const Communicator& ranks, SplitLevel<Dim>& level, bool is_red_first)
+{
+    const std::array<std::size_t, Dim> stride = strides(level);
+    CoarseLevel<Dim>& local = level.local;
+    for (int pass = 0; pass < 2; ++pass) {
+        const int colour = is_red_first ? pass : 1 - pass;
+        for_each_row(level.owned, [&](const Index<Dim>& row) {
+            int parity = colour;
+            for (const int c : row) {
+                parity += c;
+            }
+            Index<Dim> i = row;
+            i[0] += parity % 2; // the first unknown of the colour in the row
+            for (; i[0] < level.owned.hi[0]; i[0] += 2) {
+                const std::size_t o = level.offset(i);
+                double r = local.rhs[o] - local.diagonal[o] * local.x[o];
+                for (std::size_t d = 0; d < stride.size(); ++d) {
+                    r += local.a_nb[2 * d][o] * local.x[o - stride[d]] +
+                         local.a_nb[2 * d + 1][o] * local.x[o + stride[d]];
+                }
+                local.x[o] += r / local.diagonal[o];
+            }
+        });
+        fill_ghosts(ranks, level, local.x);
+    }
+}
+
+/// next.rhs = the residual of `level` summed over each block (the ranks' shares added on the
+/// owners), next.x = 0.
+template <int Dim>
+void restrict_to(const Communicator& ranks, const SplitLevel<Dim>& level, SplitLevel<Dim>& next)
+{
+    std::fill(next.local.rhs.begin(), next.local.rhs.end(), 0.0);
+    std::fill(next.local.x.begin(), next.local.x.end(), 0.0);
+    const std::array<std::size_t, Dim> stride = strides(level);
+    // In VTK order a block's members come in the order restrict_sum adds them.
+    for_each_cell_in_vtk_order<Dim>(level.owned, [&](const Index<Dim>& i) {
+        next.local.rhs[next.offset(coarse_index<Dim>(i))] +=
+            residual<Dim>(level.local, stride, level.offset(i));
+    });
+    accumulate_ghosts(ranks, next, next.local.rhs);
+}
+
+/// The root's whole copy of the gathered level, sized and zero.
+template <int Dim>
+void reset_whole(const SplitLevel<Dim>& level, CoarseLevel<Dim>& whole)
+{
+    whole.n = level.whole_n;
+    whole.periodic = level.periodic;
+    Box<Dim> box;
+    box.hi = level.whole_n;
+    whole.diagonal.assign(box.size(), 0.0);
+    for (auto& a : whole.a_nb) {
+        a.assign(box.size(), 0.0);
+    }
+    whole.rhs.assign(box.size(), 0.0);
+    whole.x.assign(box.size(), 0.0);
+}
+
+/// `count` as an MPI count, or an InternalError.
+int gathered_count(std::size_t count)
+{
+    if (count > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+        throw InternalError("split multigrid: a gathered part of more than 2^31 values");
+    }
+    return static_cast<int>(count);
+}
+
+/// The owned entries of `arrays` (stored arrays of the gathered level) of every rank into
+/// `whole_arrays` (the root's whole level) on the root: one personalised all-to-all in which
+/// the others receive nothing.
+template <int Dim>
+void gather_on_root(const Communicator& ranks, const SplitHierarchy<Dim>& hierarchy,
+                    std::span<const std::vector<double>* const> arrays,
+                    std::span<std::vector<double>* const> whole_arrays)
+{
+    const SplitLevel<Dim>& level = hierarchy.levels.back();
+    const int root = split_coarse_root(ranks);
+    const bool is_root = ranks.rank() == root;
+    std::vector<double> mine;
+    mine.reserve(level.owned.size() * arrays.size());
+    for (const std::vector<double>* values : arrays) {
+        for_each_cell_in_vtk_order<Dim>(
+            level.owned, [&](const Index<Dim>& i) { mine.push_back((*values)[level.offset(i)]); });
+    }
+    // Every rank checks every part's count, so that all throw alike rather than some wait.
+    std::vector<int> counts;
+    std::size_t total = 0;
+    for (const Box<Dim>& box : hierarchy.last_boxes) {
+        counts.push_back(gathered_count(box.size() * arrays.size()));
+        total += box.size() * arrays.size();
+    }
+    std::vector<int> send_counts(counts.size(), 0);
+    send_counts[static_cast<std::size_t>(root)] = counts[static_cast<std::size_t>(ranks.rank())];
+    const std::vector<int> receive_counts = is_root ? counts : std::vector<int>(counts.size(), 0);
+    if (!is_root) {
+        total = 0;
+    }
+    std::vector<double> all(total);
+    ranks.all_to_all(mine, send_counts, all, receive_counts);
+    if (!is_root) {
+        return;
+    }
+    const CoarseLevel<Dim>& whole = hierarchy.root_levels.front();
+    std::size_t at = 0;
+    for (const Box<Dim>& box : hierarchy.last_boxes) {
+        for (std::vector<double>* values : whole_arrays) {
+            for_each_cell_in_vtk_order<Dim>(
+                box, [&](const Index<Dim>& c) { (*values)[whole.offset(c)] = all[at++]; });
+        }
+    }
+}
+
+/// The gathered level's rhs onto the root, which solves it and the levels below it; then each
+/// rank's owned part of the solution back to it, and its ghosts filled.
+template <int Dim>
+void solve_gathered(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, int sweeps)
+{
+    SplitLevel<Dim>& level = hierarchy.levels.back();
+    const int root = split_coarse_root(ranks);
+    const bool is_root = ranks.rank() == root;
+    std::vector<double>* whole_rhs = nullptr;
+    if (is_root) {
+        whole_rhs = &hierarchy.root_levels.front().rhs;
+    }
+    const std::vector<double>* const local_rhs[] = {&level.local.rhs};
+    gather_on_root<Dim>(ranks, hierarchy, local_rhs, std::span(&whole_rhs, is_root ? 1 : 0));
+    std::vector<int> send_counts(hierarchy.last_boxes.size(), 0);
+    std::vector<double> parts;
+    if (is_root) {
+        CoarseLevel<Dim>& whole = hierarchy.root_levels.front();
+        std::fill(whole.x.begin(), whole.x.end(), 0.0);
+        coarse_v_cycle(hierarchy.root_levels, 0, sweeps);
+        for (std::size_t r = 0; r < send_counts.size(); ++r) {
+            send_counts[r] = gathered_count(hierarchy.last_boxes[r].size());
+            for_each_cell_in_vtk_order<Dim>(hierarchy.last_boxes[r], [&](const Index<Dim>& c) {
+                parts.push_back(whole.x[whole.offset(c)]);
+            });
+        }
+    }
+    std::vector<int> receive_counts(hierarchy.last_boxes.size(), 0);
+    receive_counts[static_cast<std::size_t>(root)] = gathered_count(level.owned.size());
+    std::vector<double> part(level.owned.size());
+    ranks.all_to_all(parts, send_counts, part, receive_counts);
+    std::size_t at = 0;
+    for_each_cell_in_vtk_order<Dim>(
+        level.owned, [&](const Index<Dim>& i) { level.local.x[level.offset(i)] = part[at++]; });
+    fill_ghosts(ranks, level, level.local.x);
+}
+
+template <int Dim>
+void v_cycle_from(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, std::size_t k,
+                  int sweeps)
+{
+    if (k + 1 == hierarchy.levels.size()) {
+        solve_gathered(ranks, hierarchy, sweeps);
+        return;
+    }
+    SplitLevel<Dim>& level = hierarchy.levels[k];
+    SplitLevel<Dim>& next = hierarchy.levels[k + 1];
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+        relax(ranks, level, true);
+    }
+    restrict_to(ranks, level, next);
+    v_cycle_from(ranks, hierarchy, k + 1, sweeps);
+    for_each_cell_in_vtk_order<Dim>(level.owned, [&](const Index<Dim>& i) {
+        level.local.x[level.offset(i)] += next.local.x[next.offset(coarse_index<Dim>(i))];
+    });
+    fill_ghosts(ranks, level, level.local.x);
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+        relax(ranks, level, false);
+    }
+}
+
+} // namespace
+
+template <int Dim>
+void build_split_levels(const Communicator& ranks, const StencilView<Dim>& fine,
+                        const LevelPart<Dim>& part, SplitHierarchy<Dim>& hierarchy)
+{
+    const int me = ranks.rank();
+    const Box<Dim> fine_owned{part.offset, part.offset + fine.n};
+    std::vector<Box<Dim>> boxes = gather_owned_boxes<Dim>(ranks, coarse_owned_box<Dim>(fine_owned));
+    auto& levels = hierarchy.levels;
+    levels.clear();
+    levels.push_back(
+        make_split_level<Dim>(boxes, me, coarse_extent<Dim>(part.whole_n), fine.periodic));
+    aggregate_part<Dim>(fine, part, levels.front().stored.lo, levels.front().local);
+    accumulate_operator(ranks, levels.front());
+    for (;;) {
+        std::vector<Box<Dim>> next_boxes;
+        next_boxes.reserve(boxes.size());
+        for (const Box<Dim>& box : boxes) {
+            next_boxes.push_back(coarse_owned_box<Dim>(box));
+        }
+        if (!stays_split(levels.back(), next_boxes)) {
+            break;
+        }
+        const std::size_t k = levels.size() - 1;
+        levels.push_back(make_split_level<Dim>(
+            next_boxes, me, coarse_extent<Dim>(levels[k].whole_n), levels[k].periodic));
+        // (After the push_back: it may move the levels' arrays, which the view points into.)
+        aggregate_part<Dim>(levels[k].owned_view(), levels[k].part(), levels[k + 1].stored.lo,
+                            levels[k + 1].local);
+        accumulate_operator(ranks, levels[k + 1]);
+        boxes = std::move(next_boxes);
+    }
+    hierarchy.last_boxes = std::move(boxes);
+
+    const bool is_root = me == split_coarse_root(ranks);
+    std::vector<std::vector<double>*> whole_arrays;
+    if (is_root) {
+        hierarchy.root_levels.resize(1);
+        CoarseLevel<Dim>& whole = hierarchy.root_levels.front();
+        reset_whole(levels.back(), whole);
+        whole_arrays.push_back(&whole.diagonal);
+        for (auto& a : whole.a_nb) {
+            whole_arrays.push_back(&a);
+        }
+    } else {
+        hierarchy.root_levels.clear();
+    }
+    std::vector<const std::vector<double>*> arrays{&levels.back().local.diagonal};
+    for (const auto& a : levels.back().local.a_nb) {
+        arrays.push_back(&a);
+    }
+    gather_on_root<Dim>(ranks, hierarchy, arrays, whole_arrays);
+    if (is_root) {
+        extend_coarse_levels(hierarchy.root_levels);
+    }
+}
+
+template <int Dim>
+void split_v_cycle(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, int sweeps)
+{
+    SplitLevel<Dim>& first = hierarchy.levels.front();
+    accumulate_ghosts(ranks, first, first.local.rhs);
+    std::fill(first.local.x.begin(), first.local.x.end(), 0.0);
+    v_cycle_from(ranks, hierarchy, 0, sweeps);
+}
+
+template void build_split_levels<2>(const Communicator&, const StencilView<2>&, const LevelPart<2>&,
+                                    SplitHierarchy<2>&);
+template void build_split_levels<3>(const Communicator&, const StencilView<3>&, const LevelPart<3>&,
+                                    SplitHierarchy<3>&);
+template void split_v_cycle<2>(const Communicator&, SplitHierarchy<2>&, int);
+template void split_v_cycle<3>(const Communicator&, SplitHierarchy<3>&, int);
+
+} // namespace fddem
