@@ -17,7 +17,7 @@
 /// Until the thirty-ninth session the whole first coarse level was gathered onto one rank
 /// every V-cycle (1/2^Dim of the grid), and every rank allocated it whole. Now the gathered
 /// level is the first one that fails the conditions above: with even periodic extents down to
-/// the coarsest size, at most about one unknown per rank per axis (or 64 in all); but a
+/// the coarsest size, one or two unknowns per rank along each split axis (or 64 in all); but a
 /// periodic extent of 2^k times an odd number stops the split at level k, which then reaches
 /// the root whole (a 2D grid periodic along x with 30 cells: the first coarse level).
 
