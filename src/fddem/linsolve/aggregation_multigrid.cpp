@@ -58,13 +58,8 @@ template <int Dim>
 double gauss_seidel(CoarseLevel<Dim>& level, bool is_red_first)
 {
     const auto n0 = static_cast<std::size_t>(level.n[0]);
-    std::array<std::size_t, Dim> stride{};
-    stride[0] = 1;
-    for (std::size_t d = 1; d < stride.size(); ++d) {
-        stride[d] = stride[d - 1] * static_cast<std::size_t>(level.n[d - 1]);
-    }
+    const std::array<std::size_t, Dim> stride = level.strides();
     double* x = level.x.data();
-    const double* rhs = level.rhs.data();
     const double* diagonal = level.diagonal.data();
     Box<Dim> all;
     all.hi = level.n;
@@ -93,12 +88,7 @@ double gauss_seidel(CoarseLevel<Dim>& level, bool is_red_first)
                 const std::size_t o = row_start + x0;
                 double update = 0.0;
                 if (is_inner_row && x0 > 0 && x0 + 1 < n0) {
-                    double r_o = rhs[o] - diagonal[o] * x[o];
-                    for (std::size_t d = 0; d < stride.size(); ++d) {
-                        r_o += level.a_nb[2 * d][o] * x[o - stride[d]] +
-                               level.a_nb[2 * d + 1][o] * x[o + stride[d]];
-                    }
-                    update = r_o / diagonal[o];
+                    update = interior_update<Dim>(level, stride, o);
                 } else {
                     i[0] = static_cast<int>(x0);
                     update = residual_at<Dim>(level, i, o) / diagonal[o];
@@ -150,18 +140,7 @@ template <int Dim>
 void reset_coarse(const Index<Dim>& fine_n, const std::array<bool, Dim>& periodic,
                   CoarseLevel<Dim>& coarse)
 {
-    coarse.n = coarse_extent<Dim>(fine_n);
-    coarse.periodic = periodic;
-    std::size_t size = 1;
-    for (const int e : coarse.n) {
-        size *= static_cast<std::size_t>(e);
-    }
-    coarse.diagonal.assign(size, 0.0);
-    for (auto& a : coarse.a_nb) {
-        a.assign(size, 0.0);
-    }
-    coarse.rhs.assign(size, 0.0);
-    coarse.x.assign(size, 0.0);
+    coarse.assign_zero(coarse_extent<Dim>(fine_n), periodic);
 }
 
 /// Adds fine unknown `at` (flat offset `fo`; `at` and `n` are whole-level indices and extent)
@@ -258,6 +237,36 @@ StencilView<Dim> CoarseLevel<Dim>::view() const noexcept
         v.a_nb[k] = a_nb[k].data();
     }
     return v;
+}
+
+template <int Dim>
+std::array<std::size_t, Dim> CoarseLevel<Dim>::strides() const noexcept
+{
+    std::array<std::size_t, Dim> stride{};
+    std::size_t s = 1;
+    for (std::size_t d = 0; d < stride.size(); ++d) {
+        stride[d] = s;
+        s *= static_cast<std::size_t>(n[d]);
+    }
+    return stride;
+}
+
+template <int Dim>
+void CoarseLevel<Dim>::assign_zero(const Index<Dim>& extent,
+                                   const std::array<bool, Dim>& is_periodic)
+{
+    n = extent;
+    periodic = is_periodic;
+    std::size_t size = 1;
+    for (const int e : n) {
+        size *= static_cast<std::size_t>(e);
+    }
+    diagonal.assign(size, 0.0);
+    for (auto& a : a_nb) {
+        a.assign(size, 0.0);
+    }
+    rhs.assign(size, 0.0);
+    x.assign(size, 0.0);
 }
 
 template <int Dim>

@@ -70,6 +70,10 @@ struct CoarseLevel {
         return flat;
     }
     [[nodiscard]] StencilView<Dim> view() const noexcept;
+    /// The flat distance between neighbours along each axis (x fastest).
+    [[nodiscard]] std::array<std::size_t, Dim> strides() const noexcept;
+    /// Sizes every array for `extent` unknowns (n = extent), all zero.
+    void assign_zero(const Index<Dim>& extent, const std::array<bool, Dim>& is_periodic);
 };
 
 /// The index of the coarse unknown that fine unknown `i` merges into.

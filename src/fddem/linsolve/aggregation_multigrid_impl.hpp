@@ -26,6 +26,22 @@ void for_each_in_block(const Index<Dim>& c, const Index<Dim>& fine_n, F&& f)
     }
 }
 
+/// The Gauss–Seidel change (rhs − A x)/a_P of unknown `o` of `level`, whose 2·Dim neighbours
+/// all sit at o ± stride[d] (none across a wrap or beyond a side: those take residual_at's
+/// path in the one-process sweep, or are ghosts on a split level).
+template <int Dim>
+[[nodiscard]] double interior_update(const CoarseLevel<Dim>& level,
+                                     const std::array<std::size_t, Dim>& stride,
+                                     std::size_t o) noexcept
+{
+    double r = level.rhs[o] - level.diagonal[o] * level.x[o];
+    for (std::size_t d = 0; d < stride.size(); ++d) {
+        r += level.a_nb[2 * d][o] * level.x[o - stride[d]] +
+             level.a_nb[2 * d + 1][o] * level.x[o + stride[d]];
+    }
+    return r / level.diagonal[o];
+}
+
 template <int Dim, class Residual>
 void restrict_sum(const Index<Dim>& fine_n, Residual&& residual, CoarseLevel<Dim>& coarse)
 {

@@ -85,16 +85,8 @@ SplitLevel<Dim> make_split_level(std::span<const Box<Dim>> owned_boxes, int me,
     level.periodic = periodic;
     level.owned = owned_boxes[static_cast<std::size_t>(me)];
     level.stored = level.owned.grown(1);
-    for (int d = 0; d < Dim; ++d) {
-        level.local.n[static_cast<std::size_t>(d)] = level.stored.extent(d);
-    }
-    const std::size_t size = level.stored.size();
-    level.local.diagonal.assign(size, 0.0);
-    for (auto& a : level.local.a_nb) {
-        a.assign(size, 0.0);
-    }
-    level.local.rhs.assign(size, 0.0);
-    level.local.x.assign(size, 0.0);
+    // (local.periodic stays false: the wrap goes through the ghosts.)
+    level.local.assign_zero(level.stored.hi - level.stored.lo, {});
 
     // Both ranks of a route list its entries alike: for each image (for_each_image's order),
     // the receiver's ghosts that fall in the owner's box, in VTK order.

@@ -45,18 +45,6 @@ void accumulate_operator(const Communicator& ranks, SplitLevel<Dim>& level)
     }
 }
 
-template <int Dim>
-std::array<std::size_t, Dim> strides(const SplitLevel<Dim>& level) noexcept
-{
-    std::array<std::size_t, Dim> stride{};
-    std::size_t s = 1;
-    for (std::size_t d = 0; d < stride.size(); ++d) {
-        stride[d] = s;
-        s *= static_cast<std::size_t>(level.local.n[d]);
-    }
-    return stride;
-}
-
 /// rhs − A x at stored offset `o` of an owned unknown (its neighbours' ghosts filled; the links
 /// out of a bounded side are zero).
 template <int Dim>
@@ -76,7 +64,7 @@ double residual(const CoarseLevel<Dim>& local, const std::array<std::size_t, Dim
 template <int Dim>
 void relax(const Communicator& ranks, SplitLevel<Dim>& level, bool is_red_first)
 {
-    const std::array<std::size_t, Dim> stride = strides(level);
+    const std::array<std::size_t, Dim> stride = level.local.strides();
     CoarseLevel<Dim>& local = level.local;
     for (int pass = 0; pass < 2; ++pass) {
         const int colour = is_red_first ? pass : 1 - pass;
@@ -89,12 +77,7 @@ void relax(const Communicator& ranks, SplitLevel<Dim>& level, bool is_red_first)
             i[0] += parity % 2; // the first unknown of the colour in the row
             for (; i[0] < level.owned.hi[0]; i[0] += 2) {
                 const std::size_t o = level.offset(i);
-                double r = local.rhs[o] - local.diagonal[o] * local.x[o];
-                for (std::size_t d = 0; d < stride.size(); ++d) {
-                    r += local.a_nb[2 * d][o] * local.x[o - stride[d]] +
-                         local.a_nb[2 * d + 1][o] * local.x[o + stride[d]];
-                }
-                local.x[o] += r / local.diagonal[o];
+                local.x[o] += interior_update<Dim>(local, stride, o); // every neighbour stored
             }
         });
         fill_ghosts(ranks, level, local.x);
@@ -108,29 +91,13 @@ void restrict_to(const Communicator& ranks, const SplitLevel<Dim>& level, SplitL
 {
     std::fill(next.local.rhs.begin(), next.local.rhs.end(), 0.0);
     std::fill(next.local.x.begin(), next.local.x.end(), 0.0);
-    const std::array<std::size_t, Dim> stride = strides(level);
+    const std::array<std::size_t, Dim> stride = level.local.strides();
     // In VTK order a block's members come in the order restrict_sum adds them.
     for_each_cell_in_vtk_order<Dim>(level.owned, [&](const Index<Dim>& i) {
         next.local.rhs[next.offset(coarse_index<Dim>(i))] +=
             residual<Dim>(level.local, stride, level.offset(i));
     });
     accumulate_ghosts(ranks, next, next.local.rhs);
-}
-
-/// The root's whole copy of the gathered level, sized and zero.
-template <int Dim>
-void reset_whole(const SplitLevel<Dim>& level, CoarseLevel<Dim>& whole)
-{
-    whole.n = level.whole_n;
-    whole.periodic = level.periodic;
-    Box<Dim> box;
-    box.hi = level.whole_n;
-    whole.diagonal.assign(box.size(), 0.0);
-    for (auto& a : whole.a_nb) {
-        a.assign(box.size(), 0.0);
-    }
-    whole.rhs.assign(box.size(), 0.0);
-    whole.x.assign(box.size(), 0.0);
 }
 
 /// `count` as an MPI count, or an InternalError.
@@ -288,7 +255,7 @@ void build_split_levels(const Communicator& ranks, const StencilView<Dim>& fine,
     if (is_root) {
         hierarchy.root_levels.resize(1);
         CoarseLevel<Dim>& whole = hierarchy.root_levels.front();
-        reset_whole(levels.back(), whole);
+        whole.assign_zero(levels.back().whole_n, levels.back().periodic);
         whole_arrays.push_back(&whole.diagonal);
         for (auto& a : whole.a_nb) {
             whole_arrays.push_back(&a);
