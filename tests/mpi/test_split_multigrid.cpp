@@ -81,6 +81,37 @@ void expect_ghosts_filled_and_accumulated(const Index<Dim>& cells,
     });
     EXPECT_EQ(ranks.sum(static_cast<double>(wrong)), 0.0) << "fill";
 
+    // The fill of one colour's face ghosts: exactly the ghosts outside the owned box along one
+    // axis whose owner's index sum has the colour's parity take the owner's value.
+    for (int colour = 0; colour < 2; ++colour) {
+        std::fill(values.begin(), values.end(), -1.0);
+        for_each_cell_in_vtk_order<Dim>(
+            level.owned, [&](const Index<Dim>& i) { values[level.offset(i)] = hashed<Dim>(i, 1); });
+        fill_face_ghosts_of_colour(ranks, level, values, colour);
+        wrong = 0;
+        long filled = 0;
+        for_each_cell_in_vtk_order<Dim>(level.stored, [&](const Index<Dim>& i) {
+            if (level.owned.contains(i)) {
+                return;
+            }
+            int outside = 0;
+            for (std::size_t d = 0; d < i.size(); ++d) {
+                outside += i[d] < level.owned.lo[d] || i[d] >= level.owned.hi[d] ? 1 : 0;
+            }
+            Index<Dim> w{};
+            int sum = 0;
+            const bool has_owner = wrapped<Dim>(i, n, periodic, w);
+            for (const int c : w) {
+                sum += c;
+            }
+            const bool is_filled = has_owner && outside == 1 && sum % 2 == colour;
+            filled += is_filled ? 1 : 0;
+            wrong += values[level.offset(i)] != (is_filled ? hashed<Dim>(w, 1) : -1.0) ? 1 : 0;
+        });
+        EXPECT_EQ(ranks.sum(static_cast<double>(wrong)), 0.0) << "fill of colour " << colour;
+        EXPECT_GT(ranks.sum(static_cast<double>(filled)), 0.0);
+    }
+
     // Accumulate: each rank puts 1 in every ghost with an owner; each owned entry then counts
     // the ghosts that stand for it, which every rank can count from the boxes.
     std::fill(values.begin(), values.end(), 0.0);
@@ -169,7 +200,7 @@ Index<Dim> expect_split_cycle_matches(const Index<Dim>& cells,
     std::vector<CoarseLevel<Dim>> reference;
     build_coarse_levels<Dim>(whole_view, reference);
     SplitHierarchy<Dim> split;
-    build_split_levels<Dim>(ranks, part_view, part, split);
+    build_split_levels<Dim>(ranks, part_view, part, 0, split);
     if (split.levels.empty()) {
         ADD_FAILURE() << "no coarse levels";
         return {};
@@ -222,12 +253,70 @@ Index<Dim> expect_split_cycle_matches(const Index<Dim>& cells,
     EXPECT_LE(gathered.size(), coarsest_level_size * static_cast<std::size_t>(1 << Dim) *
                                    static_cast<std::size_t>(ranks.size()));
     EXPECT_EQ(split.root_levels.empty(), ranks.rank() != split_coarse_root(ranks));
+    // The sweeps' fills reach only the face neighbours: never more ranks than the full fill.
+    const SplitLevelRoutes& routes = *split.levels.front().routes;
+    const std::size_t all_ranks = routes.all.sends.size();
+    const std::size_t face_ranks =
+        std::max(routes.colour_faces[0].sends.size(), routes.colour_faces[1].sends.size());
+    EXPECT_LE(face_ranks, all_ranks);
     if (ranks.rank() == 0) {
         std::printf("[ info ] %dD split multigrid on %d ranks: %zu split levels, gathered %zu "
-                    "unknowns; max |Δx|/max|x| = %.2e\n",
-                    Dim, ranks.size(), split.levels.size(), gathered.size(), worst / largest);
+                    "unknowns; max |Δx|/max|x| = %.2e; rank 0 sends a full fill to %zu ranks, "
+                    "a colour's face fill to %zu\n",
+                    Dim, ranks.size(), split.levels.size(), gathered.size(), worst / largest,
+                    all_ranks, face_ranks);
     }
     return split.levels.back().whole_n;
+}
+
+/// One split V-cycle on the system of make_system over `cells` (split over the world's ranks)
+/// with the hierarchy `split`, its layout in `slot`: this rank's owned correction, VTK order.
+template <int Dim>
+std::vector<double> split_cycle(const Index<Dim>& cells, const std::array<bool, Dim>& periodic,
+                                std::size_t slot, SplitHierarchy<Dim>& split)
+{
+    const MacGrid<Dim> grid = split_grid<Dim>(cells, periodic);
+    const Communicator& ranks = grid.communicator();
+    std::vector<std::vector<double>> part_arrays;
+    const Box<Dim> owned = grid.owned_cells();
+    const StencilView<Dim> part_view = make_system<Dim>(owned, periodic, part_arrays);
+    build_split_levels<Dim>(ranks, part_view, LevelPart<Dim>{owned.lo, cells}, slot, split);
+    SplitLevel<Dim>& first = split.levels.front();
+    std::fill(first.local.rhs.begin(), first.local.rhs.end(), 0.0);
+    for_each_cell_in_vtk_order<Dim>(owned, [&](const Index<Dim>& i) {
+        first.local.rhs[first.offset(coarse_index<Dim>(i))] += hashed<Dim>(i, 30) - 0.5;
+    });
+    split_v_cycle<Dim>(ranks, split, 2);
+    std::vector<double> x;
+    for_each_cell_in_vtk_order<Dim>(
+        first.owned, [&](const Index<Dim>& c) { x.push_back(first.local.x[first.offset(c)]); });
+    return x;
+}
+
+TEST(SplitMultigrid, LayoutsAreKeptPerSlotAndMadeAgainForAnotherPart)
+{
+    const Communicator world = Communicator::world();
+    const Index<3> a{24, 19, 16};
+    const Index<3> b{20, 18, 14};
+    const std::array<bool, 3> periodic{false, false, true};
+    SplitHierarchy<3> fresh_a;
+    SplitHierarchy<3> fresh_b;
+    const std::vector<double> expected_a = split_cycle<3>(a, periodic, 0, fresh_a);
+    const std::vector<double> expected_b = split_cycle<3>(b, periodic, 0, fresh_b);
+
+    // One hierarchy, built again and again: the kept layout must give the fresh cycle exactly,
+    // and a slot asked for another part must make that part's layout.
+    SplitHierarchy<3> kept;
+    long wrong = 0;
+    wrong += split_cycle<3>(a, periodic, 0, kept) != expected_a ? 1 : 0;
+    wrong += split_cycle<3>(a, periodic, 0, kept) != expected_a ? 1 : 0;
+    EXPECT_EQ(kept.layouts.size(), 1U);
+    wrong += split_cycle<3>(b, periodic, 0, kept) != expected_b ? 1 : 0;
+    wrong += split_cycle<3>(a, periodic, 1, kept) != expected_a ? 1 : 0;
+    wrong += split_cycle<3>(b, periodic, 0, kept) != expected_b ? 1 : 0;
+    wrong += split_cycle<3>(a, periodic, 1, kept) != expected_a ? 1 : 0;
+    EXPECT_EQ(kept.layouts.size(), 2U);
+    EXPECT_EQ(world.sum(static_cast<double>(wrong)), 0.0);
 }
 
 TEST(SplitMultigrid, VCycleMatchesOneProcess)

@@ -523,10 +523,11 @@ Box<Dim> whole_unknown_faces(const MacGrid<Dim>& grid, int axis)
 
 /// The multigrid's levels below `fine`: on one process the whole hierarchy
 /// (build_coarse_levels), on a split grid the split levels and the root's gathered level
-/// (linsolve/split_multigrid.hpp; `part` is where this rank's part of the whole level sits).
+/// (linsolve/split_multigrid.hpp; `part` is where this rank's part of the whole level sits;
+/// the levels' boxes and routes are kept per velocity component `axis`).
 template <int Dim>
 void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
-                  const LevelPart<Dim>& part, MomentumSystem<Dim>& system)
+                  const LevelPart<Dim>& part, int axis, MomentumSystem<Dim>& system)
 {
     if (!grid.communicator().uses_mpi()) {
         build_coarse_levels(fine, system.coarse_levels);
@@ -536,7 +537,8 @@ void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
         system.split_levels.levels.clear(); // every extent is 1: nothing to merge
         return;
     }
-    build_split_levels<Dim>(grid.communicator(), fine, part, system.split_levels);
+    build_split_levels<Dim>(grid.communicator(), fine, part, static_cast<std::size_t>(axis),
+                            system.split_levels);
 }
 
 /// max |s − u + Σ c_nb u_nb| over `box`, all ranks: the residual over a_P/α (with α = 1 the
@@ -605,7 +607,8 @@ MomentumSolveResult solve_momentum_to(const MacGrid<Dim>& grid, const BoundaryCo
     const bool is_split = grid.communicator().uses_mpi();
     // Rebuilt at every solve: a hierarchy kept for the whole time step (the coefficients
     // change between outer iterations) made the eighteen-disk case blow up at a collision.
-    build_levels<Dim>(grid, fine, part, system);
+    // (On a split grid only the operator is rebuilt; the levels' boxes and routes are kept.)
+    build_levels<Dim>(grid, fine, part, axis, system);
     const bool has_coarse_levels =
         is_split ? !system.split_levels.levels.empty() : !system.coarse_levels.empty();
     const int pre_sweeps = settings.sweeps / 2;

@@ -76,6 +76,46 @@ std::vector<Box<Dim>> gather_owned_boxes(const Communicator& ranks, const Box<Di
     return boxes;
 }
 
+namespace {
+
+/// Along how many axes `i` lies outside `box`: 1 for a face ghost of the box.
+template <int Dim>
+int axes_outside(const Box<Dim>& box, const Index<Dim>& i) noexcept
+{
+    int count = 0;
+    for (int d = 0; d < Dim; ++d) {
+        const auto sd = static_cast<std::size_t>(d);
+        count += i[sd] < box.lo[sd] || i[sd] >= box.hi[sd] ? 1 : 0;
+    }
+    return count;
+}
+
+/// The red–black colour of whole-level index `i` (inside the level: no negative entries).
+template <int Dim>
+std::size_t colour_of(const Index<Dim>& i) noexcept
+{
+    int sum = 0;
+    for (const int c : i) {
+        sum += c;
+    }
+    return static_cast<std::size_t>(sum % 2);
+}
+
+/// The route sets a ghost entry joins: every set's `all`, and the colour's face set if the
+/// ghost `ghost` (in the receiver's frame, whose owned box is `receiver`) is a face ghost;
+/// `owner_index` is the index its owner stores it at. f(set) is called for each.
+template <int Dim, class F>
+void for_each_set_of(SplitLevelRoutes& routes, const Box<Dim>& receiver, const Index<Dim>& ghost,
+                     const Index<Dim>& owner_index, F&& f)
+{
+    f(routes.all);
+    if (axes_outside<Dim>(receiver, ghost) == 1) {
+        f(routes.colour_faces[colour_of<Dim>(owner_index)]);
+    }
+}
+
+} // namespace
+
 template <int Dim>
 SplitLevel<Dim> make_split_level(std::span<const Box<Dim>> owned_boxes, int me,
                                  const Index<Dim>& whole_n, const std::array<bool, Dim>& periodic)
@@ -87,13 +127,25 @@ SplitLevel<Dim> make_split_level(std::span<const Box<Dim>> owned_boxes, int me,
     level.stored = level.owned.grown(1);
     // (local.periodic stays false: the wrap goes through the ghosts.)
     level.local.assign_zero(level.stored.hi - level.stored.lo, {});
+    auto routes = std::make_shared<SplitLevelRoutes>();
 
     // Both ranks of a route list its entries alike: for each image (for_each_image's order),
-    // the receiver's ghosts that fall in the owner's box, in VTK order.
+    // the receiver's ghosts that fall in the owner's box, in VTK order; a ghost joins the same
+    // sets on both sides (for_each_set_of, from the receiver's box and the owner's index).
+    using Set = SplitLevelRoutes::Set;
     for (std::size_t q = 0; q < owned_boxes.size(); ++q) {
         const bool is_me = static_cast<int>(q) == me;
-        SplitLevelRoutes::Route in{static_cast<int>(q), {}};
-        SplitLevelRoutes::Route out{static_cast<int>(q), {}};
+        std::vector<std::pair<Set*, SplitLevelRoutes::Route>> in;
+        std::vector<std::pair<Set*, SplitLevelRoutes::Route>> out;
+        const auto route_in = [&](auto& routes_of, Set* set) -> SplitLevelRoutes::Route& {
+            for (auto& [s, route] : routes_of) {
+                if (s == set) {
+                    return route;
+                }
+            }
+            return routes_of.emplace_back(set, SplitLevelRoutes::Route{static_cast<int>(q), {}})
+                .second;
+        };
         for_each_image<Dim>(whole_n, periodic, [&](const Index<Dim>& shift) {
             const bool is_unshifted = shift == Index<Dim>{};
             if (is_me && is_unshifted) {
@@ -103,11 +155,13 @@ SplitLevel<Dim> make_split_level(std::span<const Box<Dim>> owned_boxes, int me,
             const Box<Dim> received =
                 intersection(level.stored, shifted<Dim>(owned_boxes[q], shift));
             for_each_cell_in_vtk_order<Dim>(received, [&](const Index<Dim>& i) {
-                if (is_me) {
-                    level.routes.images.emplace_back(level.offset(i - shift), level.offset(i));
-                } else {
-                    in.entries.push_back(level.offset(i));
-                }
+                for_each_set_of<Dim>(*routes, level.owned, i, i - shift, [&](Set& set) {
+                    if (is_me) {
+                        set.images.emplace_back(level.offset(i - shift), level.offset(i));
+                    } else {
+                        route_in(in, &set).entries.push_back(level.offset(i));
+                    }
+                });
             });
             if (is_me) {
                 return;
@@ -115,16 +169,20 @@ SplitLevel<Dim> make_split_level(std::span<const Box<Dim>> owned_boxes, int me,
             // This rank's entries seen as q's ghosts.
             const Box<Dim> sent =
                 intersection(owned_boxes[q].grown(1), shifted<Dim>(level.owned, shift));
-            for_each_cell_in_vtk_order<Dim>(
-                sent, [&](const Index<Dim>& i) { out.entries.push_back(level.offset(i - shift)); });
+            for_each_cell_in_vtk_order<Dim>(sent, [&](const Index<Dim>& i) {
+                for_each_set_of<Dim>(*routes, owned_boxes[q], i, i - shift, [&](Set& set) {
+                    route_in(out, &set).entries.push_back(level.offset(i - shift));
+                });
+            });
         });
-        if (!in.entries.empty()) {
-            level.routes.receives.push_back(std::move(in));
+        for (auto& [set, route] : in) {
+            set->receives.push_back(std::move(route));
         }
-        if (!out.entries.empty()) {
-            level.routes.sends.push_back(std::move(out));
+        for (auto& [set, route] : out) {
+            set->sends.push_back(std::move(route));
         }
     }
+    level.routes = std::move(routes);
     return level;
 }
 
@@ -160,39 +218,51 @@ std::vector<std::vector<double>> swap_entries(const Communicator& ranks,
     return received;
 }
 
+/// fill_ghosts over the routes of `set`.
+void fill_over(const Communicator& ranks, const SplitLevelRoutes::Set& set,
+               std::vector<double>& values)
+{
+    const auto received = swap_entries(ranks, set.sends, set.receives, values, fill_tag);
+    for (std::size_t r = 0; r < set.receives.size(); ++r) {
+        const auto& entries = set.receives[r].entries;
+        for (std::size_t k = 0; k < entries.size(); ++k) {
+            values[entries[k]] = received[r][k];
+        }
+    }
+    for (const auto& [owned, ghost] : set.images) {
+        values[ghost] = values[owned];
+    }
+}
+
 } // namespace
 
 template <int Dim>
 void fill_ghosts(const Communicator& ranks, const SplitLevel<Dim>& level,
                  std::vector<double>& values)
 {
-    const auto& routes = level.routes;
-    const auto received = swap_entries(ranks, routes.sends, routes.receives, values, fill_tag);
-    for (std::size_t r = 0; r < routes.receives.size(); ++r) {
-        const auto& entries = routes.receives[r].entries;
-        for (std::size_t k = 0; k < entries.size(); ++k) {
-            values[entries[k]] = received[r][k];
-        }
-    }
-    for (const auto& [owned, ghost] : routes.images) {
-        values[ghost] = values[owned];
-    }
+    fill_over(ranks, level.routes->all, values);
+}
+
+template <int Dim>
+void fill_face_ghosts_of_colour(const Communicator& ranks, const SplitLevel<Dim>& level,
+                                std::vector<double>& values, int colour)
+{
+    fill_over(ranks, level.routes->colour_faces[static_cast<std::size_t>(colour)], values);
 }
 
 template <int Dim>
 void accumulate_ghosts(const Communicator& ranks, const SplitLevel<Dim>& level,
                        std::vector<double>& values)
 {
-    const auto& routes = level.routes;
-    const auto received =
-        swap_entries(ranks, routes.receives, routes.sends, values, accumulate_tag);
-    for (std::size_t r = 0; r < routes.sends.size(); ++r) {
-        const auto& entries = routes.sends[r].entries;
+    const SplitLevelRoutes::Set& set = level.routes->all;
+    const auto received = swap_entries(ranks, set.receives, set.sends, values, accumulate_tag);
+    for (std::size_t r = 0; r < set.sends.size(); ++r) {
+        const auto& entries = set.sends[r].entries;
         for (std::size_t k = 0; k < entries.size(); ++k) {
             values[entries[k]] += received[r][k];
         }
     }
-    for (const auto& [owned, ghost] : routes.images) {
+    for (const auto& [owned, ghost] : set.images) {
         values[owned] += values[ghost];
     }
 }
@@ -207,6 +277,10 @@ template SplitLevel<3> make_split_level<3>(std::span<const Box<3>>, int, const I
                                            const std::array<bool, 3>&);
 template void fill_ghosts<2>(const Communicator&, const SplitLevel<2>&, std::vector<double>&);
 template void fill_ghosts<3>(const Communicator&, const SplitLevel<3>&, std::vector<double>&);
+template void fill_face_ghosts_of_colour<2>(const Communicator&, const SplitLevel<2>&,
+                                            std::vector<double>&, int);
+template void fill_face_ghosts_of_colour<3>(const Communicator&, const SplitLevel<3>&,
+                                            std::vector<double>&, int);
 template void accumulate_ghosts<2>(const Communicator&, const SplitLevel<2>&, std::vector<double>&);
 template void accumulate_ghosts<3>(const Communicator&, const SplitLevel<3>&, std::vector<double>&);
 

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <utility>
 #include <vector>
@@ -45,12 +46,19 @@ struct SplitLevelRoutes {
         int rank = 0;
         std::vector<std::size_t> entries; ///< in the order both ranks list them
     };
-    std::vector<Route> sends;    ///< owned entries that other ranks hold as ghosts, rank order
-    std::vector<Route> receives; ///< ghost entries owned by other ranks, rank order
-    /// (owned, ghost): ghosts that are periodic images of this rank's own entries.
-    std::vector<std::pair<std::size_t, std::size_t>> images;
+    /// One exchange: what this rank sends, what it receives, and its own periodic images.
+    struct Set {
+        std::vector<Route> sends;    ///< owned entries that other ranks hold as ghosts, rank order
+        std::vector<Route> receives; ///< ghost entries owned by other ranks, rank order
+        /// (owned, ghost): ghosts that are periodic images of this rank's own entries.
+        std::vector<std::pair<std::size_t, std::size_t>> images;
+    };
+    Set all; ///< every ghost that some rank owns: faces, edges, corners, periodic images
+    /// The face ghosts (outside the owned box along one axis only) whose owner's whole-level
+    /// index sum has the parity of the colour (0 even, 1 odd): after one colour of a
+    /// (2·Dim + 1)-point red–black sweep these are the only ghosts it reads that have changed.
+    std::array<Set, 2> colour_faces;
 };
-
 /// A rank's part of one coarse level.
 template <int Dim>
 struct SplitLevel {
@@ -60,7 +68,9 @@ struct SplitLevel {
     Box<Dim> stored;                  ///< owned.grown(1): the ghost layer around them
     /// The arrays over `stored`, x fastest (local.n its extent; local.periodic unused).
     CoarseLevel<Dim> local;
-    SplitLevelRoutes routes;
+    /// Shared: they depend only on the boxes, and a later build of the same part reuses them
+    /// (split_multigrid.hpp, SplitHierarchy::layouts).
+    std::shared_ptr<const SplitLevelRoutes> routes;
 
     /// The place of whole-level index `i` (inside `stored`) in the local arrays.
     [[nodiscard]] std::size_t offset(const Index<Dim>& i) const noexcept
@@ -89,6 +99,12 @@ template <int Dim>
 template <int Dim>
 void fill_ghosts(const Communicator& ranks, const SplitLevel<Dim>& level,
                  std::vector<double>& values);
+
+/// Sets the face ghosts of colour `colour` (SplitLevelRoutes::colour_faces) to their owners'
+/// values; the other ghosts are left.
+template <int Dim>
+void fill_face_ghosts_of_colour(const Communicator& ranks, const SplitLevel<Dim>& level,
+                                std::vector<double>& values, int colour);
 
 /// Adds every ghost entry of `values` to the entry its owner holds, in rank order (the
 /// reverse of fill_ghosts). The ghosts keep their values.

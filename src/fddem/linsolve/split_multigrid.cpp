@@ -60,9 +60,11 @@ double residual(const CoarseLevel<Dim>& local, const std::array<std::size_t, Dim
 }
 
 /// A red–black Gauss–Seidel sweep over the owned unknowns, red (even index sum) first or black
-/// first, the ghosts filled after each colour.
+/// first. After each colour the face ghosts of that colour are filled, which is all the next
+/// colour and the residual read; after the second, every ghost if `is_all_filled_after`.
 template <int Dim>
-void relax(const Communicator& ranks, SplitLevel<Dim>& level, bool is_red_first)
+void relax(const Communicator& ranks, SplitLevel<Dim>& level, bool is_red_first,
+           bool is_all_filled_after)
 {
     const std::array<std::size_t, Dim> stride = level.local.strides();
     CoarseLevel<Dim>& local = level.local;
@@ -80,7 +82,11 @@ void relax(const Communicator& ranks, SplitLevel<Dim>& level, bool is_red_first)
                 local.x[o] += interior_update<Dim>(local, stride, o); // every neighbour stored
             }
         });
-        fill_ghosts(ranks, level, local.x);
+        if (pass == 1 && is_all_filled_after) {
+            fill_ghosts(ranks, level, local.x);
+        } else {
+            fill_face_ghosts_of_colour(ranks, level, local.x, colour);
+        }
     }
 }
 
@@ -202,7 +208,7 @@ void v_cycle_from(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, std
     SplitLevel<Dim>& level = hierarchy.levels[k];
     SplitLevel<Dim>& next = hierarchy.levels[k + 1];
     for (int sweep = 0; sweep < sweeps; ++sweep) {
-        relax(ranks, level, true);
+        relax(ranks, level, true, false);
     }
     restrict_to(ranks, level, next);
     v_cycle_from(ranks, hierarchy, k + 1, sweeps);
@@ -211,25 +217,27 @@ void v_cycle_from(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, std
     });
     fill_ghosts(ranks, level, level.local.x);
     for (int sweep = 0; sweep < sweeps; ++sweep) {
-        relax(ranks, level, false);
+        relax(ranks, level, false, sweep + 1 == sweeps);
     }
 }
 
 } // namespace
 
+namespace {
+
+/// The layout below `fine`: the split levels' boxes and routes while stays_split holds (one
+/// gather of every rank's box), and the owned boxes of the last.
 template <int Dim>
-void build_split_levels(const Communicator& ranks, const StencilView<Dim>& fine,
-                        const LevelPart<Dim>& part, SplitHierarchy<Dim>& hierarchy)
+SplitLayout<Dim> make_layout(const Communicator& ranks, const StencilView<Dim>& fine,
+                             const LevelPart<Dim>& part)
 {
+    SplitLayout<Dim> layout{part, fine.n, fine.periodic, {}, {}};
     const int me = ranks.rank();
     const Box<Dim> fine_owned{part.offset, part.offset + fine.n};
     std::vector<Box<Dim>> boxes = gather_owned_boxes<Dim>(ranks, coarse_owned_box<Dim>(fine_owned));
-    auto& levels = hierarchy.levels;
-    levels.clear();
+    auto& levels = layout.levels;
     levels.push_back(
         make_split_level<Dim>(boxes, me, coarse_extent<Dim>(part.whole_n), fine.periodic));
-    aggregate_part<Dim>(fine, part, levels.front().stored.lo, levels.front().local);
-    accumulate_operator(ranks, levels.front());
     for (;;) {
         std::vector<Box<Dim>> next_boxes;
         next_boxes.reserve(boxes.size());
@@ -239,18 +247,50 @@ void build_split_levels(const Communicator& ranks, const StencilView<Dim>& fine,
         if (!stays_split(levels.back(), next_boxes)) {
             break;
         }
-        const std::size_t k = levels.size() - 1;
-        levels.push_back(make_split_level<Dim>(
-            next_boxes, me, coarse_extent<Dim>(levels[k].whole_n), levels[k].periodic));
-        // (After the push_back: it may move the levels' arrays, which the view points into.)
-        aggregate_part<Dim>(levels[k].owned_view(), levels[k].part(), levels[k + 1].stored.lo,
-                            levels[k + 1].local);
-        accumulate_operator(ranks, levels[k + 1]);
+        const SplitLevel<Dim>& last = levels.back();
+        levels.push_back(
+            make_split_level<Dim>(next_boxes, me, coarse_extent<Dim>(last.whole_n), last.periodic));
         boxes = std::move(next_boxes);
     }
-    hierarchy.last_boxes = std::move(boxes);
+    for (SplitLevel<Dim>& level : levels) {
+        level.local = CoarseLevel<Dim>{}; // the layout keeps no arrays
+    }
+    layout.last_boxes = std::move(boxes);
+    return layout;
+}
 
-    const bool is_root = me == split_coarse_root(ranks);
+} // namespace
+
+template <int Dim>
+void build_split_levels(const Communicator& ranks, const StencilView<Dim>& fine,
+                        const LevelPart<Dim>& part, std::size_t slot,
+                        SplitHierarchy<Dim>& hierarchy)
+{
+    if (hierarchy.layouts.size() <= slot) {
+        hierarchy.layouts.resize(slot + 1);
+    }
+    SplitLayout<Dim>& layout = hierarchy.layouts[slot];
+    if (!layout.is_for(fine, part)) {
+        layout = make_layout<Dim>(ranks, fine, part);
+    }
+    auto& levels = hierarchy.levels;
+    levels.resize(layout.levels.size());
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        CoarseLevel<Dim> arrays = std::move(levels[k].local); // keeps its allocations
+        levels[k] = layout.levels[k];
+        levels[k].local = std::move(arrays);
+        levels[k].local.assign_zero(levels[k].stored.hi - levels[k].stored.lo, {});
+        if (k == 0) {
+            aggregate_part<Dim>(fine, part, levels[0].stored.lo, levels[0].local);
+        } else {
+            aggregate_part<Dim>(levels[k - 1].owned_view(), levels[k - 1].part(),
+                                levels[k].stored.lo, levels[k].local);
+        }
+        accumulate_operator(ranks, levels[k]);
+    }
+    hierarchy.last_boxes = layout.last_boxes;
+
+    const bool is_root = ranks.rank() == split_coarse_root(ranks);
     std::vector<std::vector<double>*> whole_arrays;
     if (is_root) {
         hierarchy.root_levels.resize(1);
@@ -283,9 +323,9 @@ void split_v_cycle(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, in
 }
 
 template void build_split_levels<2>(const Communicator&, const StencilView<2>&, const LevelPart<2>&,
-                                    SplitHierarchy<2>&);
+                                    std::size_t, SplitHierarchy<2>&);
 template void build_split_levels<3>(const Communicator&, const StencilView<3>&, const LevelPart<3>&,
-                                    SplitHierarchy<3>&);
+                                    std::size_t, SplitHierarchy<3>&);
 template void split_v_cycle<2>(const Communicator&, SplitHierarchy<2>&, int);
 template void split_v_cycle<3>(const Communicator&, SplitHierarchy<3>&, int);
 

@@ -29,8 +29,30 @@
 
 namespace fddem {
 
+/// The levels' boxes and routes below one fine part, without their arrays: they depend only on
+/// how the grid is split, so they are made once per part and reused by every later build.
+template <int Dim>
+struct SplitLayout {
+    LevelPart<Dim> part{};               ///< the fine part they were made for
+    Index<Dim> fine_n{};                 ///< its extent
+    std::array<bool, Dim> periodic{};    ///< its periodic axes
+    std::vector<SplitLevel<Dim>> levels; ///< local arrays empty
+    std::vector<Box<Dim>> last_boxes;    ///< every rank's owned box of levels.back()
+
+    [[nodiscard]] bool is_for(const StencilView<Dim>& fine, const LevelPart<Dim>& p) const noexcept
+    {
+        return !levels.empty() && part.offset == p.offset && part.whole_n == p.whole_n &&
+               fine_n == fine.n && periodic == fine.periodic;
+    }
+};
+
 template <int Dim>
 struct SplitHierarchy {
+    /// One layout per slot (the momentum solve's velocity component): made at the slot's first
+    /// build (one gather of every rank's box and a scan of every box), reused after. A slot's
+    /// fine part is the same at every build of a run, on every rank, so every rank reuses or
+    /// makes its layout alike and none waits in the gather alone.
+    std::vector<SplitLayout<Dim>> layouts;
     std::vector<SplitLevel<Dim>> levels; ///< levels[0] is the first coarse level
     std::vector<Box<Dim>> last_boxes;    ///< every rank's owned box of levels.back()
     /// On the root alone: levels.back() whole, then the one-process levels below it.
@@ -45,16 +67,20 @@ struct SplitHierarchy {
 }
 
 /// Builds the levels below `fine`, this rank's part of a level split over `ranks` (fine.n the
-/// part's extent, `part` where it sits). The whole level must have an extent above 1.
+/// part's extent, `part` where it sits), with the layout of `slot` (SplitHierarchy::layouts:
+/// made if the slot has none for this part). The whole level must have an extent above 1.
 template <int Dim>
 void build_split_levels(const Communicator& ranks, const StencilView<Dim>& fine,
-                        const LevelPart<Dim>& part, SplitHierarchy<Dim>& hierarchy);
+                        const LevelPart<Dim>& part, std::size_t slot,
+                        SplitHierarchy<Dim>& hierarchy);
 
 /// One V-cycle on the split levels (what coarse_v_cycle does on one process): on entry
 /// levels[0].local.rhs holds this rank's share of the restricted residual over its stored box
 /// (ghosts included, zero where it has none); on return levels[0].local.x holds the
 /// correction over the owned box and its ghosts. `sweeps` sweeps before and after each coarse
-/// correction.
+/// correction. Within the sweeps only the face ghosts of the colour just updated are filled
+/// (what the next colour and the restriction read); after the last sweep on a level, all of them
+/// (what the prolongation to the level above and the caller read).
 template <int Dim>
 void split_v_cycle(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, int sweeps);
 
