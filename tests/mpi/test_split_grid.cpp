@@ -356,6 +356,54 @@ TYPED_TEST(SplitGridTest, FillGivesEveryEntryItsOneProcessValue)
     }
 }
 
+TYPED_TEST(SplitGridTest, FillFacesGivesTheFaceGhostsTheirOneProcessValuesAndNothingElse)
+{
+    constexpr int Dim = TypeParam::value;
+    const int n_ranks = Communicator::world().size();
+    const Index<Dim> cells = test_cells<Dim>();
+    for (const Index<Dim>& ranks : layouts<Dim>(n_ranks)) {
+        for (int code = 0; code < (1 << Dim); ++code) {
+            const auto periodic = test::periodic_from<Dim>(code);
+            SCOPED_TRACE(describe<Dim>(ranks, periodic));
+            const GridPair<Dim> g = make_grids<Dim>(ranks, periodic);
+            const Box<Dim>& block = g.split.owned_cells();
+            // The one layer across a face of the block, where that layer has an owner.
+            const auto is_face_ghost = [&](const Index<Dim>& i) {
+                int outside = 0;
+                bool has_owner = true;
+                for (int d = 0; d < Dim; ++d) {
+                    const int at = i[ax(d)];
+                    if (at >= block.lo[ax(d)] && at < block.hi[ax(d)]) {
+                        continue;
+                    }
+                    ++outside;
+                    has_owner = has_owner && (at == block.lo[ax(d)] - 1 || at == block.hi[ax(d)]) &&
+                                (periodic[ax(d)] || (at >= 0 && at < cells[ax(d)]));
+                }
+                return outside == 1 && has_owner;
+            };
+            for (int kind = -1; kind < Dim; ++kind) {
+                GridArray<Dim> reference = labelled<Dim>(g.whole, kind);
+                HaloExchange<Dim>(g.whole).fill(reference);
+                const GridArray<Dim> before = labelled<Dim>(g.split, kind);
+                GridArray<Dim> a = before;
+                HaloExchange<Dim>(g.split).fill_faces(a);
+                int n_wrong = 0;
+                int n_filled = 0;
+                for_each_cell_in_vtk_order(g.split.storage_box(), [&](const Index<Dim>& i) {
+                    const bool is_filled = is_face_ghost(i);
+                    n_filled += is_filled ? 1 : 0;
+                    n_wrong += a(i) == (is_filled ? reference(i) : before(i)) ? 0 : 1;
+                });
+                EXPECT_EQ(n_wrong, 0) << "array kind " << kind;
+                if (n_ranks > 1 || code != 0) {
+                    EXPECT_GT(n_filled, 0) << "array kind " << kind;
+                }
+            }
+        }
+    }
+}
+
 TYPED_TEST(SplitGridTest, AccumulateIsTheAdjointOfFillOverAllRanks)
 {
     constexpr int Dim = TypeParam::value;

@@ -348,9 +348,11 @@ void relax_row(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem
 }
 
 /// One red-black Gauss–Seidel sweep of `u` over `box`. A face only reads faces of the other
-/// colour, so each colour updates in parallel without races; only periodic images are read
-/// with a non-zero coefficient (wall neighbours are folded into the coefficients), so they are
-/// the only ghosts refilled between the colours.
+/// colour, so each colour updates in parallel without races; only images of owned faces (across
+/// a periodic side or from the next block) are read with a non-zero coefficient (wall neighbours
+/// are folded into the coefficients), and only across the block's faces, one layer deep, so
+/// those are the only ghosts refilled between the colours (HaloExchange::fill_faces; the caller
+/// fills them all afterwards).
 template <int Dim>
 void red_black_sweep(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Dim>& scaled,
                      GridArray<Dim>& u)
@@ -359,7 +361,7 @@ void red_black_sweep(const MacGrid<Dim>& grid, const Box<Dim>& box, const Scaled
         for_each_row(box, [&](const Index<Dim>& row) {
             relax_row<Dim>(grid, box, scaled, row, colour, u.data());
         });
-        HaloExchange<Dim>(grid).fill(u);
+        HaloExchange<Dim>(grid).fill_faces(u);
     }
 }
 
@@ -372,10 +374,10 @@ void red_black_sweep(const MacGrid<Dim>& grid, const Box<Dim>& box, const Scaled
 /// arrays come from memory once for all the `count` sweeps instead of once per colour. Where
 /// the z slices go on beyond the block (z split over ranks, or periodic), the wavefront runs
 /// from the middle slice to both ends at once, and after each colour has reached the ends the
-/// end slices are exchanged along z (fill_axis) for the next colour: one message each way per
-/// colour and neighbour, as the colours one after the other have. Images the sweeps do not read
-/// (deeper halo layers, which hold later colours' values meanwhile; the z ghost slices at walls;
-/// w's boundary slices) are made right by the last exchange and the caller's full fill. (2D keeps
+/// end slices are exchanged along z (fill_faces_axis: the one slice beside the block) for the
+/// next colour: one message each way per colour and neighbour, as the colours one after the
+/// other have. Images the sweeps do not read (deeper halo layers; the z ghost slices at walls;
+/// w's boundary slices) are made right by the caller's full fill. (2D keeps
 /// the sweeps one after the other: its slices are single rows, and the wavefront would run them on
 /// one thread.)
 template <int Dim>
@@ -403,7 +405,7 @@ void sweeps(const MacGrid<Dim>& grid, const Box<Dim>& box, const ScaledSystem<Di
         };
         const auto exchange_ends = [&](int q) {
             if (q >= pre) {
-                halo.fill_axis(u, Dim - 1);
+                halo.fill_faces_axis(u, Dim - 1);
             }
         };
         const int stages = pre + 2 * count;
@@ -524,10 +526,10 @@ Box<Dim> whole_unknown_faces(const MacGrid<Dim>& grid, int axis)
 /// The multigrid's levels below `fine`: on one process the whole hierarchy
 /// (build_coarse_levels), on a split grid the split levels and the root's gathered level
 /// (linsolve/split_multigrid.hpp; `part` is where this rank's part of the whole level sits;
-/// the levels' boxes and routes are kept per velocity component `axis`).
+/// the levels' boxes and routes are kept from the system's first solve).
 template <int Dim>
 void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
-                  const LevelPart<Dim>& part, int axis, MomentumSystem<Dim>& system)
+                  const LevelPart<Dim>& part, MomentumSystem<Dim>& system)
 {
     if (!grid.communicator().uses_mpi()) {
         build_coarse_levels(fine, system.coarse_levels);
@@ -537,8 +539,7 @@ void build_levels(const MacGrid<Dim>& grid, const StencilView<Dim>& fine,
         system.split_levels.levels.clear(); // every extent is 1: nothing to merge
         return;
     }
-    build_split_levels<Dim>(grid.communicator(), fine, part, static_cast<std::size_t>(axis),
-                            system.split_levels);
+    build_split_levels<Dim>(grid.communicator(), fine, part, system.split_levels);
 }
 
 /// max |s − u + Σ c_nb u_nb| over `box`, all ranks: the residual over a_P/α (with α = 1 the
@@ -608,7 +609,7 @@ MomentumSolveResult solve_momentum_to(const MacGrid<Dim>& grid, const BoundaryCo
     // Rebuilt at every solve: a hierarchy kept for the whole time step (the coefficients
     // change between outer iterations) made the eighteen-disk case blow up at a collision.
     // (On a split grid only the operator is rebuilt; the levels' boxes and routes are kept.)
-    build_levels<Dim>(grid, fine, part, axis, system);
+    build_levels<Dim>(grid, fine, part, system);
     const bool has_coarse_levels =
         is_split ? !system.split_levels.levels.empty() : !system.coarse_levels.empty();
     const int pre_sweeps = settings.sweeps / 2;
@@ -632,7 +633,7 @@ MomentumSolveResult solve_momentum_to(const MacGrid<Dim>& grid, const BoundaryCo
                     coarse_v_cycle(system.coarse_levels, 0, 2);
                     add_coarse_correction<Dim>(box, fine, part, Index<Dim>{}, coarse, u.data());
                 }
-                HaloExchange<Dim>(grid).fill(u);
+                HaloExchange<Dim>(grid).fill_faces(u); // for the sweeps; all after them
             }
             sweeps(grid, box, scaled, post_sweeps, false, u);
         }

@@ -38,7 +38,9 @@ struct MomentumSystem {
     GridArray<Dim> scaled_source;
     std::array<GridArray<Dim>, 2 * Dim> scaled_nb;
     std::vector<CoarseLevel<Dim>> coarse_levels; ///< the multigrid's, rebuilt every solve
-    SplitHierarchy<Dim> split_levels;            ///< the same on a grid split over ranks
+    /// The same on a grid split over ranks: the operator rebuilt every solve, the levels'
+    /// boxes and routes kept from the first (one system per velocity component, one split).
+    SplitHierarchy<Dim> split_levels;
 };
 
 struct MomentumSettings {

@@ -83,12 +83,39 @@ SplitLayers<Dim> split_layers(const MacGrid<Dim>& grid, int axis)
             layers(grid, axis, hi - layers_below, layers_below)};
 }
 
+/// The layers of fill_faces along `axis`: one ghost layer below and above the owned cells and
+/// the owned layers they are images of, each over the owned cells' extent along the other axes.
 template <int Dim>
-void fill_split_axis(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a)
+SplitLayers<Dim> face_layers(const MacGrid<Dim>& grid, int axis)
+{
+    const Box<Dim>& block = grid.owned_cells();
+    const auto ax = static_cast<std::size_t>(axis);
+    const auto layer = [&](int at) {
+        Box<Dim> box = block;
+        box.lo[ax] = at;
+        box.hi[ax] = at + 1;
+        return box;
+    };
+    return {layer(block.lo[ax] - 1), layer(block.hi[ax]), layer(block.lo[ax]),
+            layer(block.hi[ax] - 1)};
+}
+
+/// a(to) ← a(from), two boxes of the same shape (the periodic images of fill_faces_axis).
+template <int Dim>
+void copy_box(GridArray<Dim>& a, const Box<Dim>& from, const Box<Dim>& to)
+{
+    const Index<Dim> shift = from.lo - to.lo;
+    for_each_cell_in_vtk_order(to, [&](const Index<Dim>& i) { a(i) = a(i + shift); });
+}
+
+/// Each rank sends `l.first_owned` down and `l.last_owned` up and receives its ghosts
+/// `l.ghosts_above` and `l.ghosts_below` from the ranks there.
+template <int Dim>
+void exchange_layers(const MacGrid<Dim>& grid, int axis, const SplitLayers<Dim>& l,
+                     GridArray<Dim>& a)
 {
     const auto [below, above] = grid.partition().neighbours[static_cast<std::size_t>(axis)];
     const auto& comm = grid.communicator();
-    const SplitLayers<Dim> l = split_layers(grid, axis);
     std::vector<double> from_above(above == Communicator::no_rank ? 0 : l.ghosts_above.size());
     comm.exchange(pack(a, l.first_owned), below, from_above, above, fill_down);
     std::vector<double> from_below(below == Communicator::no_rank ? 0 : l.ghosts_below.size());
@@ -99,6 +126,12 @@ void fill_split_axis(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a)
     if (below != Communicator::no_rank) {
         unpack(a, l.ghosts_below, from_below);
     }
+}
+
+template <int Dim>
+void fill_split_axis(const MacGrid<Dim>& grid, int axis, GridArray<Dim>& a)
+{
+    exchange_layers(grid, axis, split_layers(grid, axis), a);
 }
 
 template <int Dim>
@@ -177,6 +210,29 @@ void HaloExchange<Dim>::fill(GridArray<Dim>& a) const
 {
     for (int d = 0; d < Dim; ++d) {
         fill_axis(a, d);
+    }
+}
+
+template <int Dim>
+void HaloExchange<Dim>::fill_faces(GridArray<Dim>& a) const
+{
+    for (int d = 0; d < Dim; ++d) {
+        fill_faces_axis(a, d);
+    }
+}
+
+template <int Dim>
+void HaloExchange<Dim>::fill_faces_axis(GridArray<Dim>& a, int d) const
+{
+    const SplitLayers<Dim> l = face_layers(*grid_, d);
+    if (grid_->is_split(d)) {
+        exchange_layers(*grid_, d, l, a);
+        return;
+    }
+    if (grid_->is_periodic(d)) {
+        // One process along d: its owned layers are the whole axis, their images in place.
+        copy_box(a, l.last_owned, l.ghosts_below);
+        copy_box(a, l.first_owned, l.ghosts_above);
     }
 }
 

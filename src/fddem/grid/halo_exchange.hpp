@@ -58,6 +58,17 @@ public:
     /// neighbouring blocks if it is split), over the whole storage extent of the others.
     void fill_axis(GridArray<Dim>& a, int axis) const;
 
+    /// fill restricted to what a (2·Dim + 1)-point stencil on the momentum unknowns reads: the
+    /// one ghost layer across each face of the owned cells' box, over the owned cells' extent
+    /// along the other axes (no edge or corner ghost, no deeper layer; a face array's boundary
+    /// face n of a bounded axis, never an unknown, gets no such neighbours). A red–black sweep
+    /// refreshes its neighbours' values with it between colours; the deeper layers and the edges
+    /// stay as they were until the next fill.
+    void fill_faces(GridArray<Dim>& a) const;
+
+    /// fill_faces along one axis only.
+    void fill_faces_axis(GridArray<Dim>& a, int axis) const;
+
     /// Whether no axis but the outermost (Dim − 1) is split over ranks: then the images within a
     /// slice across Dim − 1 are copies within the process (fill_plane).
     [[nodiscard]] bool keeps_slices_apart() const;

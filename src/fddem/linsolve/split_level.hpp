@@ -69,7 +69,7 @@ struct SplitLevel {
     /// The arrays over `stored`, x fastest (local.n its extent; local.periodic unused).
     CoarseLevel<Dim> local;
     /// Shared: they depend only on the boxes, and a later build of the same part reuses them
-    /// (split_multigrid.hpp, SplitHierarchy::layouts).
+    /// (split_multigrid.hpp, SplitHierarchy::layout).
     std::shared_ptr<const SplitLevelRoutes> routes;
 
     /// The place of whole-level index `i` (inside `stored`) in the local arrays.

@@ -263,13 +263,9 @@ SplitLayout<Dim> make_layout(const Communicator& ranks, const StencilView<Dim>& 
 
 template <int Dim>
 void build_split_levels(const Communicator& ranks, const StencilView<Dim>& fine,
-                        const LevelPart<Dim>& part, std::size_t slot,
-                        SplitHierarchy<Dim>& hierarchy)
+                        const LevelPart<Dim>& part, SplitHierarchy<Dim>& hierarchy)
 {
-    if (hierarchy.layouts.size() <= slot) {
-        hierarchy.layouts.resize(slot + 1);
-    }
-    SplitLayout<Dim>& layout = hierarchy.layouts[slot];
+    SplitLayout<Dim>& layout = hierarchy.layout;
     if (!layout.is_for(fine, part)) {
         layout = make_layout<Dim>(ranks, fine, part);
     }
@@ -323,9 +319,9 @@ void split_v_cycle(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, in
 }
 
 template void build_split_levels<2>(const Communicator&, const StencilView<2>&, const LevelPart<2>&,
-                                    std::size_t, SplitHierarchy<2>&);
+                                    SplitHierarchy<2>&);
 template void build_split_levels<3>(const Communicator&, const StencilView<3>&, const LevelPart<3>&,
-                                    std::size_t, SplitHierarchy<3>&);
+                                    SplitHierarchy<3>&);
 template void split_v_cycle<2>(const Communicator&, SplitHierarchy<2>&, int);
 template void split_v_cycle<3>(const Communicator&, SplitHierarchy<3>&, int);
 

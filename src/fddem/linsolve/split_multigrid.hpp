@@ -48,11 +48,9 @@ struct SplitLayout {
 
 template <int Dim>
 struct SplitHierarchy {
-    /// One layout per slot (the momentum solve's velocity component): made at the slot's first
-    /// build (one gather of every rank's box and a scan of every box), reused after. A slot's
-    /// fine part is the same at every build of a run, on every rank, so every rank reuses or
-    /// makes its layout alike and none waits in the gather alone.
-    std::vector<SplitLayout<Dim>> layouts;
+    /// Made at the first build (one gather of every rank's box and a scan of every box) and
+    /// reused after, while the fine part stays the same (build_split_levels).
+    SplitLayout<Dim> layout;
     std::vector<SplitLevel<Dim>> levels; ///< levels[0] is the first coarse level
     std::vector<Box<Dim>> last_boxes;    ///< every rank's owned box of levels.back()
     /// On the root alone: levels.back() whole, then the one-process levels below it.
@@ -67,20 +65,23 @@ struct SplitHierarchy {
 }
 
 /// Builds the levels below `fine`, this rank's part of a level split over `ranks` (fine.n the
-/// part's extent, `part` where it sits), with the layout of `slot` (SplitHierarchy::layouts:
-/// made if the slot has none for this part). The whole level must have an extent above 1.
+/// part's extent, `part` where it sits), with hierarchy.layout if it was made for this part,
+/// else with a new one. The whole level must have an extent above 1. Collective, and the choice
+/// is each rank's own: a hierarchy must be built under one split of the grid all along (as a
+/// momentum system is, for its one velocity component), so that every rank reuses its layout
+/// or makes a new one alike and none waits alone in the gather of the boxes.
 template <int Dim>
 void build_split_levels(const Communicator& ranks, const StencilView<Dim>& fine,
-                        const LevelPart<Dim>& part, std::size_t slot,
-                        SplitHierarchy<Dim>& hierarchy);
+                        const LevelPart<Dim>& part, SplitHierarchy<Dim>& hierarchy);
 
 /// One V-cycle on the split levels (what coarse_v_cycle does on one process): on entry
 /// levels[0].local.rhs holds this rank's share of the restricted residual over its stored box
 /// (ghosts included, zero where it has none); on return levels[0].local.x holds the
 /// correction over the owned box and its ghosts. `sweeps` sweeps before and after each coarse
 /// correction. Within the sweeps only the face ghosts of the colour just updated are filled
-/// (what the next colour and the restriction read); after the last sweep on a level, all of them
-/// (what the prolongation to the level above and the caller read).
+/// (what the next colour and the restriction read); at the end of a level's visit (after its
+/// last post-smoothing sweep, or after the prolongation if `sweeps` is 0) all of them, which the
+/// prolongation to the level above and, on the first level, the caller read.
 template <int Dim>
 void split_v_cycle(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, int sweeps);
 
