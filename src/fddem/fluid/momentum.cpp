@@ -633,7 +633,9 @@ MomentumSolveResult solve_momentum_to(const MacGrid<Dim>& grid, const BoundaryCo
                     coarse_v_cycle(system.coarse_levels, 0, 2);
                     add_coarse_correction<Dim>(box, fine, part, Index<Dim>{}, coarse, u.data());
                 }
-                HaloExchange<Dim>(grid).fill_faces(u); // for the sweeps; all after them
+                // The post-smoothing sweeps read only the face ghosts; fill_component_ghosts
+                // below fills them all.
+                HaloExchange<Dim>(grid).fill_faces(u);
             }
             sweeps(grid, box, scaled, post_sweeps, false, u);
         }

@@ -30,8 +30,9 @@
 ///
 /// Axes are exchanged one after the other over the whole storage extent of the others (fill in
 /// axis order, accumulate in reverse), so edge and corner ghosts of a doubly periodic box, and
-/// the corner four ranks share, are right as well. fill, accumulate and zero_ghosts are
-/// collective over the grid's ranks: every rank calls them in the same order.
+/// the corner four ranks share, are right as well (fill_faces, for the sweeps, leaves the edges,
+/// corners and deeper layers). fill, fill_faces, accumulate and zero_ghosts are collective over
+/// the grid's ranks: every rank calls them in the same order.
 
 #include "fddem/grid/fields.hpp"
 #include "fddem/grid/mac_grid.hpp"

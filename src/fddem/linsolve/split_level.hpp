@@ -59,6 +59,7 @@ struct SplitLevelRoutes {
     /// (2·Dim + 1)-point red–black sweep these are the only ghosts it reads that have changed.
     std::array<Set, 2> colour_faces;
 };
+
 /// A rank's part of one coarse level.
 template <int Dim>
 struct SplitLevel {

@@ -221,10 +221,6 @@ void v_cycle_from(const Communicator& ranks, SplitHierarchy<Dim>& hierarchy, std
     }
 }
 
-} // namespace
-
-namespace {
-
 /// The layout below `fine`: the split levels' boxes and routes while stays_split holds (one
 /// gather of every rank's box), and the owned boxes of the last.
 template <int Dim>
