@@ -3,6 +3,7 @@
 
 #include "fddem/contact/contact_geometry.hpp"
 #include "fddem/contact/dem_integrator.hpp"
+#include "fddem/contact/film_solve.hpp"
 #include "fddem/contact/neighbour_list.hpp"
 #include "fddem/contact/tangential_contact.hpp"
 
@@ -145,6 +146,10 @@ public:
     /// flow's.
     void lubricate(std::span<Particle<Dim>> bodies, double step, double dt)
     {
+        if (lubrication_.film_solve == LubricationFilmSolve::joint) {
+            lubricate_jointly(bodies, step, dt);
+            return;
+        }
         for (const auto& [i, j] : neighbours_.pairs()) {
             const auto a = static_cast<std::size_t>(i);
             const auto b = static_cast<std::size_t>(j);
@@ -158,6 +163,59 @@ public:
             const ContactGeometry<Dim> g = wall_contact(bodies[a], d, side);
             damp(g, bodies[a], nullptr, std::numeric_limits<double>::infinity(), shell_depths_[a],
                  step, dt);
+        }
+    }
+
+    /// lubrication.film_solve = "joint": the same films as lubricate's, every gap of the
+    /// neighbour list and the walls, solved together (contact/film_solve.hpp); the free bodies
+    /// take the solve's velocities, and every body the films' impulses in its forces as damp
+    /// gives them.
+    void lubricate_jointly(std::span<Particle<Dim>> bodies, double step, double dt)
+    {
+        film_bodies_.clear();
+        for (const Particle<Dim>& b : bodies) {
+            film_bodies_.push_back({b.mass(), b.inertia(), b.is_free()});
+        }
+        gaps_.clear();
+        for (const auto& [i, j] : neighbours_.pairs()) {
+            const auto a = static_cast<std::size_t>(i);
+            const auto b = static_cast<std::size_t>(j);
+            gaps_.push_back(
+                {a, b, ball_ball_contact(ball_of(bodies[a]), ball_of(bodies[b]), domain_),
+                 bodies[a].radius(), bodies[b].radius(), shell_depths_[a] + shell_depths_[b]});
+        }
+        for (const auto& [body, d, side] : neighbours_.walls()) {
+            const auto a = static_cast<std::size_t>(body);
+            gaps_.push_back({a, FilmGap<Dim>::wall, wall_contact(bodies[a], d, side),
+                             bodies[a].radius(), std::numeric_limits<double>::infinity(),
+                             shell_depths_[a]});
+        }
+        const JointFilms<Dim> films =
+            joint_film_impulses<Dim>(film_bodies_, gaps_, step, lubrication_);
+        for (std::size_t b = 0; b < bodies.size(); ++b) {
+            if (bodies[b].is_free()) {
+                bodies[b].contact.velocity += films.velocity_change[b];
+                bodies[b].contact.omega += films.omega_change[b];
+            }
+        }
+        const auto report = [dt](Particle<Dim>& p, const Vec<Dim>& impulse, const Vec<Dim>& lever) {
+            ContactState<Dim>& s = p.contact;
+            const AngularVec<Dim> moment = cross(lever, impulse);
+            s.mean_force += impulse / dt;
+            s.mean_torque += moment / dt;
+            s.lubrication_force += impulse / dt;
+            s.lubrication_torque += moment / dt;
+        };
+        for (std::size_t k = 0; k < gaps_.size(); ++k) {
+            const FilmGap<Dim>& g = gaps_[k];
+            const Vec<Dim>& on_second = films.on_second[k];
+            if (on_second.isZero(0.0)) {
+                continue;
+            }
+            report(bodies[g.first], Vec<Dim>(-on_second), g.geometry.lever_first);
+            if (g.second != FilmGap<Dim>::wall) {
+                report(bodies[g.second], on_second, g.geometry.lever_second);
+            }
         }
     }
 
@@ -357,8 +415,10 @@ private:
     double stretch_ = 0.0;         ///< time over which the springs stretch now [s]
     std::vector<Vec<Dim>> centres_;
     std::vector<double> radii_;
-    std::vector<double> shell_depths_; ///< outermost_shell_depth of each body [m]
-    NeighbourList<Dim> neighbours_;    ///< candidates for this step's sub-steps
+    std::vector<double> shell_depths_;       ///< outermost_shell_depth of each body [m]
+    NeighbourList<Dim> neighbours_;          ///< candidates for this step's sub-steps
+    std::vector<FilmBody<Dim>> film_bodies_; ///< lubricate_jointly's, kept for their storage
+    std::vector<FilmGap<Dim>> gaps_;         ///< lubricate_jointly's, kept for their storage
     const LubricationSettings& lubrication_;
 
     static double largest_radius(std::span<const Particle<Dim>> bodies)

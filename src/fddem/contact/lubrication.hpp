@@ -81,15 +81,26 @@ enum class LubricationCoupling {
     implicit,
 };
 
+/// How the DEM sub-steps apply the films of several gaps (lubrication.film_solve).
+enum class LubricationFilmSolve {
+    /// pair by pair in the neighbour list's order, each film on the velocities the ones before
+    /// it left (film_step; a Gauss–Seidel pass: its result depends on that order)
+    sweep,
+    /// all films of a sub-step at once (contact/film_solve.hpp): order-free, stable at any
+    /// stiffness, the same as the sweep for a body with one film
+    joint,
+};
+
 /// [lubrication] of a case, in SI units as the DEM uses it.
 struct LubricationSettings {
     bool is_enabled = false; ///< off: the sub-steps are the dry DEM's, bit for bit
     double viscosity = 0.0;  ///< μ [Pa·s]
     double range = 0.0;      ///< activation gap h_Δ [m] (the case gives it in grid spacings)
     double roughness = 1e-3; ///< h_σ as a fraction of the smaller radius
-    LubricationInContact in_contact = LubricationInContact::off;  ///< while overlapping
-    LubricationResolved resolved = LubricationResolved::range;    ///< what the grid resolves
-    LubricationCoupling coupling = LubricationCoupling::implicit; ///< bodies not in contact
+    LubricationInContact in_contact = LubricationInContact::off;   ///< while overlapping
+    LubricationResolved resolved = LubricationResolved::range;     ///< what the grid resolves
+    LubricationCoupling coupling = LubricationCoupling::implicit;  ///< bodies not in contact
+    LubricationFilmSolve film_solve = LubricationFilmSolve::sweep; ///< several gaps at once
 };
 
 /// Resistance coefficients of one gap [N·s/m] (2D: per unit length).

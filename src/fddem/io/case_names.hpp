@@ -127,6 +127,11 @@ constexpr auto case_names(LubricationResolved /*tag*/)
     using enum LubricationResolved;
     return std::to_array<EnumName<LubricationResolved>>({{range, "range"}, {shells, "shells"}});
 }
+constexpr auto case_names(LubricationFilmSolve /*tag*/)
+{
+    using enum LubricationFilmSolve;
+    return std::to_array<EnumName<LubricationFilmSolve>>({{sweep, "sweep"}, {joint, "joint"}});
+}
 constexpr auto case_names(LubricationCoupling /*tag*/)
 {
     using enum LubricationCoupling;

@@ -795,6 +795,14 @@ std::vector<KeySpec> case_schema()
                   "default until 2026-12-02, kept by the cases measured with it; §5, "
                   "\"The default coupling of the film\")."),
               &CaseConfig::lubrication, &LubricationConfig::coupling));
+    s.push_back(bound(
+        key("lubrication", "film_solve", T::string, none, "\"sweep\"",
+            "How the DEM sub-steps apply the films of several gaps: sweep (pair by pair, each "
+            "on the velocities the pairs before it left; the result depends on their order) "
+            "or joint (all of a sub-step's films solved together: order-free, a body between "
+            "two stiff films stopped, not reversed; the same as sweep for a body with one "
+            "film; docs/method.md §5, \"The films solved together\")."),
+        &CaseConfig::lubrication, &LubricationConfig::film_solve));
 
     s.push_back(
         bound(positive(key("nondimensional", "reynolds", T::real, none, "none",

@@ -250,9 +250,10 @@ struct LubricationConfig {
     bool is_enabled = false;
     double range = 2.0;      ///< activation gap h_Δ in grid spacings h (the largest spacing)
     double roughness = 1e-3; ///< saturation gap h_σ as a fraction of the smaller radius
-    LubricationInContact in_contact = LubricationInContact::off;  ///< while the surfaces overlap
-    LubricationResolved resolved = LubricationResolved::range;    ///< what the grid resolves
-    LubricationCoupling coupling = LubricationCoupling::implicit; ///< bodies not in contact
+    LubricationInContact in_contact = LubricationInContact::off;   ///< while the surfaces overlap
+    LubricationResolved resolved = LubricationResolved::range;     ///< what the grid resolves
+    LubricationCoupling coupling = LubricationCoupling::implicit;  ///< bodies not in contact
+    LubricationFilmSolve film_solve = LubricationFilmSolve::sweep; ///< the DEM's films at once
 
     /// On, and in eqs. (13)–(14) for bodies not in contact (coupling/lubrication_coupling.hpp).
     [[nodiscard]] bool is_implicit() const noexcept

@@ -210,7 +210,7 @@ make_contact_setup(const CaseConfig& config, const MacGrid<Dim>& grid,
     const LubricationSettings lubrication{
         lub.is_enabled, config.fluid.viscosity, lub.range * grid.spacing().maxCoeff(),
         lub.roughness,  lub.in_contact,         lub.resolved,
-        lub.coupling};
+        lub.coupling,   lub.film_solve};
     const double reach = std::max(contact.margin, lubrication.is_enabled ? lubrication.range : 0.0);
     return ContactSetup<Dim>{DemSettings{std::move(*model), contact.velocity_damping,
                                          std::max(1, substeps), contact.margin, lubrication,
