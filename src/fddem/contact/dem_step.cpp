@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 namespace fddem {
 namespace {
@@ -166,6 +167,12 @@ public:
         }
     }
 
+    /// A body as the films see it.
+    static FilmBody<Dim> film_body(const Particle<Dim>& b)
+    {
+        return {b.mass(), b.inertia(), b.is_free()};
+    }
+
     /// lubrication.film_solve = "joint": the same films as lubricate's, every gap of the
     /// neighbour list and the walls, solved together (contact/film_solve.hpp); the free bodies
     /// take the solve's velocities, and every body the films' impulses in its forces as damp
@@ -174,7 +181,7 @@ public:
     {
         film_bodies_.clear();
         for (const Particle<Dim>& b : bodies) {
-            film_bodies_.push_back({b.mass(), b.inertia(), b.is_free()});
+            film_bodies_.push_back(film_body(b));
         }
         gaps_.clear();
         for (const auto& [i, j] : neighbours_.pairs()) {
@@ -198,23 +205,16 @@ public:
                 bodies[b].contact.omega += films.omega_change[b];
             }
         }
-        const auto report = [dt](Particle<Dim>& p, const Vec<Dim>& impulse, const Vec<Dim>& lever) {
-            ContactState<Dim>& s = p.contact;
-            const AngularVec<Dim> moment = cross(lever, impulse);
-            s.mean_force += impulse / dt;
-            s.mean_torque += moment / dt;
-            s.lubrication_force += impulse / dt;
-            s.lubrication_torque += moment / dt;
-        };
         for (std::size_t k = 0; k < gaps_.size(); ++k) {
             const FilmGap<Dim>& g = gaps_[k];
             const Vec<Dim>& on_second = films.on_second[k];
             if (on_second.isZero(0.0)) {
                 continue;
             }
-            report(bodies[g.first], Vec<Dim>(-on_second), g.geometry.lever_first);
+            take_film_impulse(bodies[g.first], Vec<Dim>(-on_second), g.geometry.lever_first, dt,
+                              false);
             if (g.second != FilmGap<Dim>::wall) {
-                report(bodies[g.second], on_second, g.geometry.lever_second);
+                take_film_impulse(bodies[g.second], on_second, g.geometry.lever_second, dt, false);
             }
         }
     }
@@ -363,45 +363,38 @@ private:
     void damp(const ContactGeometry<Dim>& g, Particle<Dim>& first, Particle<Dim>* second,
               double second_radius, double shell_gap, double step, double dt)
     {
-        const double gap = -g.overlap;
-        const double gap_rate = -g.overlap_rate; // ḣ = v·n, < 0 approaching
-        if (gap >= lubrication_.range && gap + step * gap_rate >= lubrication_.range) {
-            return; // out of the range now and after the drift
-        }
-        const auto inverse = [](const Particle<Dim>* p, double value) {
-            return p != nullptr && p->is_free() ? 1.0 / value : 0.0;
-        };
-        const double mass_sum =
-            inverse(&first, first.mass()) + inverse(second, second ? second->mass() : 1.0);
-        const double turn_sum =
-            g.lever_first.squaredNorm() * inverse(&first, first.inertia()) +
-            g.lever_second.squaredNorm() * inverse(second, second ? second->inertia() : 1.0);
-        // The impulses on the second body, along the normal and the slip.
-        const FilmStep film = film_step<Dim>(gap, gap_rate, mass_sum, step, first.radius(),
-                                             second_radius, lubrication_, shell_gap);
-        if (film.normal_impulse == 0.0 && film.tangential == 0.0) {
+        const FilmBody<Dim> one = film_body(first);
+        const FilmBody<Dim> other = second != nullptr ? film_body(*second) : FilmBody<Dim>{};
+        const std::optional<Vec<Dim>> film = lone_film_impulse<Dim>(
+            {0, FilmGap<Dim>::wall, g, first.radius(), second_radius, shell_gap}, &one,
+            second != nullptr ? &other : nullptr, step, lubrication_);
+        if (!film) {
             return;
         }
-        const Vec<Dim> normal_impulse = film.normal_impulse * g.normal;
-        const Vec<Dim> slip_impulse =
-            damping_impulse(1.0, film.tangential, mass_sum + turn_sum, step) * g.slip_velocity;
-        const Vec<Dim> on_second = normal_impulse + slip_impulse;
-        const auto push = [&](Particle<Dim>& p, const Vec<Dim>& impulse, const Vec<Dim>& lever) {
-            ContactState<Dim>& s = p.contact;
-            const AngularVec<Dim> moment = cross(lever, impulse);
-            if (p.is_free()) {
-                s.velocity += impulse / p.mass();
-                s.omega += moment / p.inertia();
-            }
-            s.mean_force += impulse / dt;
-            s.mean_torque += moment / dt;
-            s.lubrication_force += impulse / dt;
-            s.lubrication_torque += moment / dt;
-        };
-        push(first, Vec<Dim>(-on_second), g.lever_first);
+        const Vec<Dim>& on_second = *film;
+        take_film_impulse(first, Vec<Dim>(-on_second), g.lever_first, dt, true);
         if (second != nullptr) {
-            push(*second, on_second, g.lever_second);
+            take_film_impulse(*second, on_second, g.lever_second, dt, true);
         }
+    }
+
+    /// A film's impulse on body `p` at `lever` from its centre: in its mean and lubrication force
+    /// and torque (impulse / `dt`), and, if `is_moved` and the body is free, in its velocity and
+    /// angular velocity. A prescribed or fixed body keeps its velocity but reports the force, as
+    /// it reports the resolved flow's.
+    static void take_film_impulse(Particle<Dim>& p, const Vec<Dim>& impulse, const Vec<Dim>& lever,
+                                  double dt, bool is_moved)
+    {
+        ContactState<Dim>& s = p.contact;
+        const AngularVec<Dim> moment = cross(lever, impulse);
+        if (is_moved && p.is_free()) {
+            s.velocity += impulse / p.mass();
+            s.omega += moment / p.inertia();
+        }
+        s.mean_force += impulse / dt;
+        s.mean_torque += moment / dt;
+        s.lubrication_force += impulse / dt;
+        s.lubrication_torque += moment / dt;
     }
 
     const DemWalls<Dim>& walls_;

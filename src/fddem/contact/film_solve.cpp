@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "fddem/contact/film_solve.hpp"
 
+#include "fddem/core/errors.hpp"
+
 #include <Eigen/Dense>
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <stdexcept>
 
 namespace fddem {
 namespace {
@@ -36,13 +36,18 @@ double gap_of(const FilmGap<Dim>& gap)
     return -gap.geometry.overlap;
 }
 
-/// Whether the film reaches a gap that moves at `rate` over the sub-step: within the range now
-/// or at the end of its travel (the sweep's test, damp in dem_step.cpp).
+/// Whether the film acts on a gap that moves at `rate` over the sub-step: its correction is
+/// not zero over the gap's travel (out of the range, or overlapping with lubrication.in_contact
+/// "off", it is). A gap it does not act on changes nothing in the solve (G is flat over its
+/// travel) and joins no component: a body with one film besides its contacts keeps the sweep's
+/// bits.
 template <int Dim>
-bool is_reached(const FilmGap<Dim>& gap, double rate, double step, double range)
+bool acts(const FilmGap<Dim>& gap, double rate, double step, const LubricationSettings& settings)
 {
     const double h0 = gap_of(gap);
-    return h0 < range || h0 + step * rate < range;
+    const LubricationResistance mean = lubrication_correction_over<Dim>(
+        h0, h0 + step * rate, gap.first_radius, gap.second_radius, settings, gap.shell_gap);
+    return mean.normal != 0.0 || mean.tangential != 0.0;
 }
 
 /// A set of gaps joined by the free bodies they share, and those bodies.
@@ -199,7 +204,8 @@ private:
         }
         const Eigen::LDLT<Eigen::MatrixXd> factors(dense);
         if (factors.info() != Eigen::Success) {
-            throw std::runtime_error("joint film solve: a system did not factorise");
+            throw InternalError("joint film solve: a system that should be positive definite "
+                                "did not factorise (a NaN in a body's state?)");
         }
         return factors.solve(right);
     }
@@ -297,7 +303,8 @@ public:
             }
             dv += alpha * d;
             f = next;
-            if (alpha * d.lpNorm<Eigen::Infinity>() <= tolerance * scale ||
+            // The undamped step: a damped one may be short because the search stopped early.
+            if (d.lpNorm<Eigen::Infinity>() <= tolerance * scale ||
                 next_step_bound(f) <= tolerance * scale) {
                 break;
             }
@@ -467,32 +474,22 @@ AngularVec<Dim> angular_of(const Eigen::VectorXd& w, long at)
     }
 }
 
-/// One gap alone (no other gap shares a free body with it): the sweep's step, film_step and
-/// damping_impulse as dem_step.cpp's damp applies them, so that it gives the same bits.
+/// One gap alone (no other gap shares a free body with it): the sweep's step (lone_film_impulse).
 template <int Dim>
 void single_gap(std::span<const FilmBody<Dim>> bodies, const FilmGap<Dim>& g, double step,
                 const LubricationSettings& settings, Vec<Dim>& on_second, JointFilms<Dim>& out)
 {
-    const auto inverse = [&](std::size_t b, bool is_mass) {
-        return is_wall<Dim>(b) || !bodies[b].is_free
-                   ? 0.0
-                   : 1.0 / (is_mass ? bodies[b].mass : bodies[b].inertia);
-    };
-    const double mass_sum = inverse(g.first, true) + inverse(g.second, true);
-    const double turn_sum = g.geometry.lever_first.squaredNorm() * inverse(g.first, false) +
-                            g.geometry.lever_second.squaredNorm() * inverse(g.second, false);
-    const FilmStep film = film_step<Dim>(gap_of(g), -g.geometry.overlap_rate, mass_sum, step,
-                                         g.first_radius, g.second_radius, settings, g.shell_gap);
-    if (film.normal_impulse == 0.0 && film.tangential == 0.0) {
+    const auto body = [&](std::size_t b) { return is_wall<Dim>(b) ? nullptr : &bodies[b]; };
+    const std::optional<Vec<Dim>> impulse =
+        lone_film_impulse<Dim>(g, body(g.first), body(g.second), step, settings);
+    if (!impulse) {
         return;
     }
-    on_second =
-        film.normal_impulse * g.geometry.normal +
-        damping_impulse(1.0, film.tangential, mass_sum + turn_sum, step) * g.geometry.slip_velocity;
-    const auto push = [&](std::size_t b, const Vec<Dim>& impulse, const Vec<Dim>& lever) {
+    on_second = *impulse;
+    const auto push = [&](std::size_t b, const Vec<Dim>& on_body, const Vec<Dim>& lever) {
         if (!is_wall<Dim>(b) && bodies[b].is_free) {
-            out.velocity_change[b] += impulse / bodies[b].mass;
-            out.omega_change[b] += cross(lever, impulse) / bodies[b].inertia;
+            out.velocity_change[b] += on_body / bodies[b].mass;
+            out.omega_change[b] += cross(lever, on_body) / bodies[b].inertia;
         }
     };
     push(g.first, Vec<Dim>(-on_second), g.geometry.lever_first);
@@ -582,7 +579,7 @@ void joint_gaps(std::span<const FilmBody<Dim>> bodies, std::span<const FilmGap<D
     const Eigen::VectorXd dv = scale > 0.0 ? normal.solve(scale, iterations)
                                            : Eigen::VectorXd(Eigen::VectorXd::Zero(
                                                  Dim * static_cast<long>(component.bodies.size())));
-    out.newton_iterations += iterations;
+    out.n_newton_iterations += iterations;
     const auto moved = [&](std::size_t b) {
         return is_wall<Dim>(b) || slot[b] == none ? Vec<Dim>(Vec<Dim>::Zero())
                                                   : Vec<Dim>(dv.segment<Dim>(Dim * slot[b]));
@@ -617,6 +614,33 @@ void joint_gaps(std::span<const FilmBody<Dim>> bodies, std::span<const FilmGap<D
 } // namespace
 
 template <int Dim>
+std::optional<Vec<Dim>> lone_film_impulse(const FilmGap<Dim>& gap, const FilmBody<Dim>* first,
+                                          const FilmBody<Dim>* second, double step,
+                                          const LubricationSettings& settings)
+{
+    const ContactGeometry<Dim>& g = gap.geometry;
+    const double h0 = gap_of(gap);
+    const double rate = -g.overlap_rate; // ḣ = v·n, < 0 approaching
+    if (h0 >= settings.range && h0 + step * rate >= settings.range) {
+        return std::nullopt; // out of the range now and after the drift
+    }
+    const auto inverse = [](const FilmBody<Dim>* b, bool is_mass) {
+        return b != nullptr && b->is_free ? 1.0 / (is_mass ? b->mass : b->inertia) : 0.0;
+    };
+    const double mass_sum = inverse(first, true) + inverse(second, true);
+    const double turn_sum = g.lever_first.squaredNorm() * inverse(first, false) +
+                            g.lever_second.squaredNorm() * inverse(second, false);
+    const FilmStep film = film_step<Dim>(h0, rate, mass_sum, step, gap.first_radius,
+                                         gap.second_radius, settings, gap.shell_gap);
+    if (film.normal_impulse == 0.0 && film.tangential == 0.0) {
+        return std::nullopt;
+    }
+    return Vec<Dim>(film.normal_impulse * g.normal +
+                    damping_impulse(1.0, film.tangential, mass_sum + turn_sum, step) *
+                        g.slip_velocity);
+}
+
+template <int Dim>
 JointFilms<Dim> joint_film_impulses(std::span<const FilmBody<Dim>> bodies,
                                     std::span<const FilmGap<Dim>> gaps, double step,
                                     const LubricationSettings& settings)
@@ -625,7 +649,7 @@ JointFilms<Dim> joint_film_impulses(std::span<const FilmBody<Dim>> bodies,
     std::vector<char> is_active(gaps.size(), 0);
     std::vector<std::size_t> active;
     for (std::size_t k = 0; k < gaps.size(); ++k) {
-        if (is_reached(gaps[k], -gaps[k].geometry.overlap_rate, step, settings.range)) {
+        if (acts(gaps[k], -gaps[k].geometry.overlap_rate, step, settings)) {
             is_active[k] = 1;
             active.push_back(k);
         }
@@ -636,7 +660,7 @@ JointFilms<Dim> joint_film_impulses(std::span<const FilmBody<Dim>> bodies,
         out.on_second.assign(gaps.size(), Vec<Dim>::Zero());
         out.velocity_change.assign(bodies.size(), Vec<Dim>::Zero());
         out.omega_change.assign(bodies.size(), zero_angular<Dim>());
-        out.newton_iterations = 0;
+        out.n_newton_iterations = 0;
         for (const Component& c : components_of<Dim>(bodies, gaps, active)) {
             if (c.gaps.size() == 1) {
                 single_gap<Dim>(bodies, gaps[c.gaps[0]], step, settings, out.on_second[c.gaps[0]],
@@ -656,7 +680,7 @@ JointFilms<Dim> joint_film_impulses(std::span<const FilmBody<Dim>> bodies,
                 rate += g.geometry.normal.dot(out.velocity_change[g.second]);
             }
             rate -= g.geometry.normal.dot(out.velocity_change[g.first]);
-            if (is_reached(g, rate, step, settings.range)) {
+            if (acts(g, rate, step, settings)) {
                 is_active[k] = 1;
                 is_widened = true;
             }
@@ -673,6 +697,12 @@ JointFilms<Dim> joint_film_impulses(std::span<const FilmBody<Dim>> bodies,
     }
 }
 
+template std::optional<Vec<2>> lone_film_impulse<2>(const FilmGap<2>&, const FilmBody<2>*,
+                                                    const FilmBody<2>*, double,
+                                                    const LubricationSettings&);
+template std::optional<Vec<3>> lone_film_impulse<3>(const FilmGap<3>&, const FilmBody<3>*,
+                                                    const FilmBody<3>*, double,
+                                                    const LubricationSettings&);
 template JointFilms<2> joint_film_impulses<2>(std::span<const FilmBody<2>>,
                                               std::span<const FilmGap<2>>, double,
                                               const LubricationSettings&);

@@ -47,6 +47,7 @@
 
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -56,7 +57,7 @@ namespace fddem {
 template <int Dim>
 struct FilmBody {
     double mass = 1.0;    ///< [kg] (2D: per unit length)
-    double inertia = 1.0; ///< about its centre (a ball's: scalar) [kg m²]
+    double inertia = 1.0; ///< about its centre (a ball's: scalar) [kg m²] (2D: per unit length)
     bool is_free = true;  ///< false: fixed or prescribed, its velocity kept
 };
 
@@ -86,12 +87,21 @@ struct JointFilms {
     std::vector<Vec<Dim>> on_second;
     std::vector<Vec<Dim>> velocity_change;     ///< per body [m/s]; zero if not free
     std::vector<AngularVec<Dim>> omega_change; ///< per body [1/s]; zero if not free
-    int newton_iterations = 0;
+    int n_newton_iterations = 0;
 };
 
+/// One gap's film over a sub-step `step` [s] as if it alone acted (the sweep's step, dem_step.cpp's
+/// damp): the impulse on the second body at the contact point [N·s] (film_step along the normal,
+/// damping_impulse across it), or none if the film does not act (out of the range now and after
+/// the drift, or a zero correction). `first` and `second` null: a wall.
+template <int Dim>
+[[nodiscard]] std::optional<Vec<Dim>>
+lone_film_impulse(const FilmGap<Dim>& gap, const FilmBody<Dim>* first, const FilmBody<Dim>* second,
+                  double step, const LubricationSettings& settings);
+
 /// The films' impulses over one sub-step `step` [s], all gaps together (above). A gap is in the
-/// solve if it is within settings.range now or at the end of the sub-step's travel, at the
-/// velocities before the films or after them; the set is widened until it stops changing.
+/// solve if its correction is not zero over its travel, at the velocities before the films or
+/// after them; the set is widened until it stops changing.
 template <int Dim>
 [[nodiscard]] JointFilms<Dim> joint_film_impulses(std::span<const FilmBody<Dim>> bodies,
                                                   std::span<const FilmGap<Dim>> gaps, double step,

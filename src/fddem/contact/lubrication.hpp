@@ -87,7 +87,7 @@ enum class LubricationFilmSolve {
     /// it left (film_step; a Gauss–Seidel pass: its result depends on that order)
     sweep,
     /// all films of a sub-step at once (contact/film_solve.hpp): order-free, stable at any
-    /// stiffness, the same as the sweep for a body with one film
+    /// stiffness, the sweep's bits for a film whose bodies have no other
     joint,
 };
 

@@ -800,8 +800,8 @@ std::vector<KeySpec> case_schema()
             "How the DEM sub-steps apply the films of several gaps: sweep (pair by pair, each "
             "on the velocities the pairs before it left; the result depends on their order) "
             "or joint (all of a sub-step's films solved together: order-free, a body between "
-            "two stiff films stopped, not reversed; the same as sweep for a body with one "
-            "film; docs/method.md §5, \"The films solved together\")."),
+            "two stiff films stopped, not reversed; the same as sweep, bit for bit, for a film "
+            "whose bodies have no other; docs/method.md §5, \"The films solved together\")."),
         &CaseConfig::lubrication, &LubricationConfig::film_solve));
 
     s.push_back(
