@@ -21,6 +21,8 @@ template <int Dim>
 constexpr int angular_size = Dim == 2 ? 1 : 3;
 
 /// Systems up to this many unknowns are factorised dense, larger ones iterated (GapSystem).
+// 24: eight bodies' normal unknowns in 3D, four bodies' with their spins; a dense LDLT of that
+// size costs about what a few CG iterations over the gaps do (a choice, not tuned to a case).
 constexpr long largest_dense = 24;
 
 template <int Dim>
@@ -248,6 +250,8 @@ private:
         Eigen::VectorXd z = precondition(r);
         Eigen::VectorXd p = z;
         double rz = r.dot(z);
+        // A safeguard only: in exact arithmetic CG ends within size() iterations; this leaves
+        // room for round-off and returns the best iterate if the goal is never met.
         const long limit = 10 * size() + 100;
         for (long i = 0; i < limit && r.norm() > goal; ++i) {
             const Eigen::VectorXd q = apply(p);
@@ -313,6 +317,8 @@ public:
     }
 
 private:
+    /// A safeguard: the problem is strictly convex and Newton with the line search converges
+    /// in a few iterations (4 in the tests' non-linear column); the last iterate is kept.
     static constexpr int max_iterations = 100;
     static constexpr double tolerance = 1e-13;
 
@@ -413,7 +419,7 @@ private:
         double slope_lo = slope0;
         double alpha = 1.0;
         int side = 0;
-        for (int i = 0; i < 60; ++i) {
+        for (int i = 0; i < 60; ++i) { // a safeguard: the bracket shrinks every iteration
             alpha = (lo * slope_hi - hi * slope_lo) / (slope_hi - slope_lo);
             const double s = slope(alpha);
             if (std::abs(s) <= 0.25 * -slope0) {
@@ -540,6 +546,8 @@ void tangential_films(std::span<const FilmBody<Dim>> bodies, std::span<const Fil
         }
         system.add(local(g.first), first, local(g.second), second, c);
     }
+    // Linear and solved once (no Newton to absorb an inexact solve): tighter than the normal
+    // part's 1e-12 directions.
     const Eigen::VectorXd dw = system.solve(right, 1e-13);
     for (std::size_t i = 0; i < component.gaps.size(); ++i) {
         const std::size_t k = component.gaps[i];
