@@ -14,6 +14,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "error_agreement.hpp"
 #include "interrupt.hpp"
 
 namespace {
@@ -157,15 +158,26 @@ int main(int argc, char** argv)
         }
     }
     run.n_processes = n_processes;
+    ErrorAgreement agreement(n_processes);
     // On several processes an error that one rank meets would leave the others waiting in a
-    // collective: every error ends all of them (MPI_Abort, with the same exit status). An
-    // input error is met by every rank alike and said once, by rank 0.
+    // collective. An input error is met by every rank alike: rank 0 says it, and when every
+    // rank has met it (app/error_agreement.hpp) they all end with its status. Any other error,
+    // or one that not every rank meets within the wait, ends them all by MPI_Abort, said by
+    // the rank that met it.
     const auto fail = [&](int status, const std::string& text, bool is_said_by_every_rank) {
         if (rank == 0 || !is_said_by_every_rank) {
             std::fprintf(stderr, "%s\n", text.c_str());
         }
+        std::fflush(stderr);
         if (n_processes > 1) {
-            std::fflush(stderr);
+            constexpr double wait_seconds = 30.0;
+            if (is_said_by_every_rank && agreement.every_rank_failed(wait_seconds)) {
+                return status;
+            }
+            if (rank != 0 && is_said_by_every_rank) {
+                std::fprintf(stderr, "%s (rank %d; not every rank met it)\n", text.c_str(), rank);
+                std::fflush(stderr);
+            }
             MPI_Abort(MPI_COMM_WORLD, status);
         }
         return status;
