@@ -199,6 +199,7 @@ public:
         }
         const JointFilms<Dim> films =
             joint_film_impulses<Dim>(film_bodies_, gaps_, step, lubrication_);
+        unfinished_film_solves += films.n_unfinished;
         for (std::size_t b = 0; b < bodies.size(); ++b) {
             if (bodies[b].is_free()) {
                 bodies[b].contact.velocity += films.velocity_change[b];
@@ -264,6 +265,7 @@ public:
     std::vector<char> has_contact;
     std::vector<char> touching; ///< overlaps a body or a wall at the state last evaluated
     int in_contact = 0;
+    int unfinished_film_solves = 0; ///< over the step's sub-steps (JointFilms::n_unfinished)
 
 private:
     /// A pair apart by less than the margin counts as in contact (DemSettings::margin) but
@@ -497,6 +499,7 @@ DemOutcome advance_with(const Model& model, std::span<Particle<Dim>> bodies,
         bodies[b].contact.is_in_contact = contacts.has_contact[b] != 0;
     }
     outcome.n_contacts = contacts.in_contact;
+    outcome.n_unfinished_film_solves = contacts.unfinished_film_solves;
     return outcome;
 }
 

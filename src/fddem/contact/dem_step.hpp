@@ -83,6 +83,9 @@ struct DemOutcome {
     double max_overlap = 0.0;          ///< largest α seen in any sub-step [m]
     double max_relative_overlap = 0.0; ///< largest α / r of the smaller body
     int n_contacts = 0;                ///< contacts at the end of the step
+    /// lubrication.film_solve "joint": its solves that stopped at an iteration limit before
+    /// their tolerance, over the step's sub-steps (contact/film_solve.hpp)
+    int n_unfinished_film_solves = 0;
 };
 
 /// Advances every body of `bodies` through settings.substeps sub-steps of dt (one time step),

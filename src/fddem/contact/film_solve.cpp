@@ -166,13 +166,16 @@ public:
         return y;
     }
 
-    /// The solution for `right`, to `tolerance` of its norm when iterated.
-    [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& right, double tolerance) const
+    /// The solution for `right`, to `tolerance` of its norm when iterated; `is_met` false if
+    /// the iteration stopped at its limit above that (a factorised solve meets it).
+    [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& right, double tolerance,
+                                        bool& is_met) const
     {
+        is_met = true;
         if (size() <= largest_dense) {
             return dense_solve(right);
         }
-        return conjugate_gradients(right, tolerance);
+        return conjugate_gradients(right, tolerance, is_met);
     }
 
 private:
@@ -213,7 +216,7 @@ private:
     }
 
     [[nodiscard]] Eigen::VectorXd conjugate_gradients(const Eigen::VectorXd& right,
-                                                      double tolerance) const
+                                                      double tolerance, bool& is_met) const
     {
         std::vector<Block> blocks(mass_.size());
         for (std::size_t i = 0; i < mass_.size(); ++i) {
@@ -263,6 +266,8 @@ private:
             p = z + (next / rz) * p;
             rz = next;
         }
+        // Written so that a NaN counts as not met.
+        is_met = r.norm() <= goal;
         return x;
     }
 
@@ -286,18 +291,23 @@ public:
     }
 
     /// The changes Δv that solve it, to 1e-13 of `scale` (the largest |ḣ*| of its gaps).
-    Eigen::VectorXd solve(double scale, int& iterations)
+    /// `is_met` false if Newton's iteration stopped at its limit before that.
+    Eigen::VectorXd solve(double scale, int& iterations, bool& is_met)
     {
+        is_met = false;
         Eigen::VectorXd dv = Eigen::VectorXd::Zero(size_);
         Eigen::VectorXd f = gradient(dv);
         for (iterations = 0; iterations < max_iterations;) {
             assemble_hessian(dv);
             // An inexact direction only slows the last iterations: each solves to 1e-12.
-            const Eigen::VectorXd d = -system_.solve(f, 1e-12);
+            bool is_direction_met = true; // an inexact direction is corrected by the next one
+            const Eigen::VectorXd d = -system_.solve(f, 1e-12, is_direction_met);
             ++iterations;
             const double slope0 = d.dot(f);
             if (!(slope0 < 0.0)) {
-                break; // no descent left: ∇Φ is zero to round-off
+                // no descent left: ∇Φ is zero to round-off (a NaN is not met)
+                is_met = !std::isnan(slope0);
+                break;
             }
             Eigen::VectorXd next = gradient(Eigen::VectorXd(dv + d));
             double alpha = 1.0;
@@ -310,6 +320,7 @@ public:
             // The undamped step: a damped one may be short because the search stopped early.
             if (d.lpNorm<Eigen::Infinity>() <= tolerance * scale ||
                 next_step_bound(f) <= tolerance * scale) {
+                is_met = true;
                 break;
             }
         }
@@ -548,7 +559,9 @@ void tangential_films(std::span<const FilmBody<Dim>> bodies, std::span<const Fil
     }
     // Linear and solved once (no Newton to absorb an inexact solve): tighter than the normal
     // part's 1e-12 directions.
-    const Eigen::VectorXd dw = system.solve(right, 1e-13);
+    bool is_met = true;
+    const Eigen::VectorXd dw = system.solve(right, 1e-13, is_met);
+    out.n_unfinished += is_met ? 0 : 1;
     for (std::size_t i = 0; i < component.gaps.size(); ++i) {
         const std::size_t k = component.gaps[i];
         const FilmGap<Dim>& g = gaps[k];
@@ -584,10 +597,12 @@ void joint_gaps(std::span<const FilmBody<Dim>> bodies, std::span<const FilmGap<D
     }
     NormalFilms<Dim> normal(bodies, gaps, component, slot, step, settings);
     int iterations = 0;
-    const Eigen::VectorXd dv = scale > 0.0 ? normal.solve(scale, iterations)
+    bool is_met = true;
+    const Eigen::VectorXd dv = scale > 0.0 ? normal.solve(scale, iterations, is_met)
                                            : Eigen::VectorXd(Eigen::VectorXd::Zero(
                                                  Dim * static_cast<long>(component.bodies.size())));
     out.n_newton_iterations += iterations;
+    out.n_unfinished += is_met ? 0 : 1;
     const auto moved = [&](std::size_t b) {
         return is_wall<Dim>(b) || slot[b] == none ? Vec<Dim>(Vec<Dim>::Zero())
                                                   : Vec<Dim>(dv.segment<Dim>(Dim * slot[b]));
@@ -669,6 +684,7 @@ JointFilms<Dim> joint_film_impulses(std::span<const FilmBody<Dim>> bodies,
         out.velocity_change.assign(bodies.size(), Vec<Dim>::Zero());
         out.omega_change.assign(bodies.size(), zero_angular<Dim>());
         out.n_newton_iterations = 0;
+        out.n_unfinished = 0;
         for (const Component& c : components_of<Dim>(bodies, gaps, active)) {
             if (c.gaps.size() == 1) {
                 single_gap<Dim>(bodies, gaps[c.gaps[0]], step, settings, out.on_second[c.gaps[0]],

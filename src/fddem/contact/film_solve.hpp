@@ -88,6 +88,9 @@ struct JointFilms {
     std::vector<Vec<Dim>> velocity_change;     ///< per body [m/s]; zero if not free
     std::vector<AngularVec<Dim>> omega_change; ///< per body [1/s]; zero if not free
     int n_newton_iterations = 0;
+    /// solves that stopped at an iteration limit (Newton's for the normal part, conjugate
+    /// gradients' for the slips) before their tolerance; the safeguard's last iterate is used
+    int n_unfinished = 0;
 };
 
 /// One gap's film over a sub-step `step` [s] as if it alone acted (the sweep's step, dem_step.cpp's

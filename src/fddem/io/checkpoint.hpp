@@ -47,8 +47,9 @@ namespace fddem {
 // 2: springs; 3: rest_since; 4: the adaptive time step's residual history; 5: the per-contact
 // constants of the adaptive collision model; 6: the last step's Δt and each body's U^{n−1},
 // ω^{n−1} (time.scheme = "bdf2"); 7: the collisions under way (lubrication.coupling = "implicit")
-// 8: the grid arrays in pieces, one per rank (the pieces' table in the header)
-inline constexpr std::uint64_t checkpoint_format_version = 8;
+// 8: the grid arrays in pieces, one per rank (the pieces' table in the header); 9: the count of
+// the joint film solves stopped at an iteration limit (summary.json)
+inline constexpr std::uint64_t checkpoint_format_version = 9;
 
 /// (key, value as text) pairs: what a checkpoint's grid and bodies must share with the case it
 /// is restored into.

@@ -24,9 +24,10 @@ struct RunRecord {
     double max_relative_overlap = 0.0; ///< overlap / radius
     double max_overlap_time = 0.0;     ///< [s]
     bool has_warned_overlap = false;
-    double wall_seconds = 0.0; ///< wall time of the time loop so far, over all processes [s]
-    long restarts = 0;         ///< how often the run was continued from a checkpoint
-    StepReport last;           ///< of the last step (the steady-state test reads it)
+    long unfinished_film_solves = 0; ///< StepReport::unfinished_film_solves summed
+    double wall_seconds = 0.0;       ///< wall time of the time loop so far, over all processes [s]
+    long restarts = 0;               ///< how often the run was continued from a checkpoint
+    StepReport last;                 ///< of the last step (the steady-state test reads it)
 
     // Output schedule and counters.
     double next_field_time = 0.0;                                ///< [s]
@@ -50,6 +51,7 @@ struct RunRecord {
         archive("run.max_relative_overlap", r.max_relative_overlap);
         archive("run.max_overlap_time", r.max_overlap_time);
         archive("run.has_warned_overlap", r.has_warned_overlap);
+        archive("run.unfinished_film_solves", r.unfinished_film_solves);
         archive("run.wall_seconds", r.wall_seconds);
         archive("run.restarts", r.restarts);
         archive("last.outer_iterations", r.last.outer_iterations);

@@ -182,6 +182,19 @@ void watch_step(const StepReport& report, const Clock& clock, const CaseConfig& 
                                         100.0 * overlap_warning, remedy));
         }
     }
+    // The joint film solve's iteration limits are safeguards (contact/film_solve.cpp): a solve
+    // that stops at one is said once, with its step, and counted in summary.json.
+    if (report.unfinished_film_solves > 0) {
+        if (record.unfinished_film_solves == 0) {
+            monitor.message(fmt::format(
+                "warning: step {} (t = {:g} s): {} of the lubrication films' joint solves "
+                "(lubrication.film_solve = \"joint\") stopped at an iteration limit before "
+                "their tolerance; their last iterate is used. Further ones are counted in "
+                "summary.json (unfinished_film_solves)",
+                clock.step, clock.time, report.unfinished_film_solves));
+        }
+        record.unfinished_film_solves += report.unfinished_film_solves;
+    }
     // A pseudo-time march to a steady state (time.steady) takes steps of growing Δt whose
     // outer iterations need not converge on the way: its Courant numbers and unconverged steps
     // are counted but not reported one by one; the last line says what the march reached.

@@ -65,6 +65,10 @@ void write_run_summary(const Simulation<Dim>& sim, const CaseConfig& config,
     summary.set("time", sim.clock().time);
     summary.set("total_outer_iterations", record.total_outer_iterations);
     summary.set("unconverged_steps", record.unconverged_steps);
+    if (config.lubrication.is_enabled &&
+        config.lubrication.film_solve == LubricationFilmSolve::joint) {
+        summary.set("unfinished_film_solves", record.unfinished_film_solves);
+    }
     summary.set("max_courant", record.max_courant);
     if (config.time.max_courant) { // the limits a step is retried at (time_step_control.hpp)
         const RetrySettings& retry = sim.retry_settings();

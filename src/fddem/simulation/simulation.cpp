@@ -289,6 +289,7 @@ void Simulation<Dim>::resolve_contacts(StepReport& report)
     report.max_overlap = outcome.max_overlap;
     report.max_relative_overlap = outcome.max_relative_overlap;
     report.contacts = outcome.n_contacts;
+    report.unfinished_film_solves = outcome.n_unfinished_film_solves;
 }
 
 template <int Dim>

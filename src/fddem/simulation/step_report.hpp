@@ -20,6 +20,7 @@ struct StepReport {
     double max_overlap = 0.0;  ///< largest contact overlap α in the DEM sub-steps [m]
     double max_relative_overlap = 0.0; ///< largest α / radius (of the smaller body)
     int contacts = 0;                  ///< contacts at the end of the DEM sub-steps
+    int unfinished_film_solves = 0;    ///< DemOutcome::n_unfinished_film_solves (not in solver.csv)
     int retries = 0; ///< times the step was taken again at half its Δt (time.max_retries)
 };
 
