@@ -5,6 +5,7 @@
 // the terminal, the signal handlers, and the exit status of each way a run ends.
 
 #include "fddem/io/case_reader.hpp"
+#include "fddem/run/rank_reasons.hpp"
 #include "fddem/run/run_case.hpp"
 
 #include <filesystem>
@@ -84,8 +85,11 @@ int run_command(const RunOptions& options)
     RunMonitor quiet; // the other ranks: rank 0 speaks for the run
     if (!options.restart_directory.empty()) {
         const fs::path directory = options.restart_directory;
-        const CaseConfig config =
-            read_restart_case(directory, options.overrides, ranks.rank() == 0);
+        // Rank 0 alone checks the lock; every rank reads the case (the same errors on each).
+        CaseConfig config;
+        agree_on_input_error(ranks, true, [&] {
+            config = read_restart_case(directory, options.overrides, ranks.rank() == 0);
+        });
         TerminalMonitor terminal(options, config);
         return exit_status(restart_run(
             config, directory, ranks.rank() == 0 ? static_cast<RunMonitor&>(terminal) : quiet,

@@ -34,7 +34,9 @@ bool ErrorAgreement::every_rank_failed(double wait_seconds)
     int is_done = 0;
     while (MPI_Test(&request, &is_done, MPI_STATUS_IGNORE) == MPI_SUCCESS && is_done == 0) {
         if (std::chrono::steady_clock::now() > deadline) {
-            return false;
+            // Once more: the last rank may have joined while this one slept.
+            MPI_Test(&request, &is_done, MPI_STATUS_IGNORE);
+            return is_done != 0;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }

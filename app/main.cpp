@@ -170,7 +170,9 @@ int main(int argc, char** argv)
         }
         std::fflush(stderr);
         if (n_processes > 1) {
-            constexpr double wait_seconds = 30.0;
+            // The ranks meet a common input error within moments of each other (they read the
+            // same files); the wait bounds the delay of an input error met by fewer of them.
+            constexpr double wait_seconds = 10.0;
             if (is_said_by_every_rank && agreement.every_rank_failed(wait_seconds)) {
                 return status;
             }

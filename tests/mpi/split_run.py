@@ -13,8 +13,9 @@ array to 1e-10 of its largest value), with no frame files left over that the .pv
 not list (a restart removes the later frames and their pieces); and checkpoints that continue on another
 number of processes (one process's on N, N processes' on one, and for N > 2 two processes' on N)
 as the one-process run continues.
-Then the bad input of a split run: a body of negative diameter, a restart of a directory that does not
-exist and one from a damaged checkpoint, each end with exit status 2 and one message; and a
+Then the bad input of a split run: a body of negative diameter, a run into a directory that is not
+empty (which rank 0 alone checks), a restart of a directory that does not exist and one from a
+damaged checkpoint, each end with exit status 2 and one message, without MPI_Abort; and a
 damaged piece of the newest checkpoint is named, set aside, and the run continues from the one before. The pressure is solved by FFT transforms in both: FFTW's serial ones on one
 process, FFTW-MPI's slabs on N (hypre's split solve is checked by many_ranks.py and the unit tests). Exit status 0 if all holds, 1 with the first difference otherwise.
 """
@@ -228,11 +229,20 @@ def main():
         disk.write_text(BAD_DISK)
         result = run(split + ["run", str(disk), "-o", str(work / "disk_run")], 2)
         said = [line for line in result.stderr.splitlines() if line.startswith("fddem:")]
-        if len(said) != 1 or "diameter" not in said[0] or (work / "disk_run").exists():
+        if len(said) != 1 or "diameter" not in said[0] or (work / "disk_run").exists() or "MPI_ABORT" in result.stderr:
             sys.exit(f"a body of negative diameter on {n} processes: {result.stderr}")
+        # Rank 0 alone checks the run directory; every rank must still end without MPI_Abort
+        # (app/error_agreement.hpp: an abort could kill rank 0 before its message is forwarded).
+        taken = work / "taken"
+        (taken / "notes").mkdir(parents=True)
+        result = run(split + ["run", str(work / "cavity.toml"), "-o", str(taken)], 2)
+        said = [line for line in result.stderr.splitlines() if line.startswith("fddem:")]
+        if (len(said) != 1 or "exists and is not empty" not in said[0]
+                or "MPI_ABORT" in result.stderr or sorted(p.name for p in taken.iterdir()) != ["notes"]):
+            sys.exit(f"a run into a directory that is not empty on {n} processes: {result.stderr}")
         result = run(split + ["run", "--restart", str(work / "nowhere")], 2)
         said = [line for line in result.stderr.splitlines() if line.startswith("fddem:")]
-        if len(said) != 1 or "no such run directory" not in said[0]:
+        if len(said) != 1 or "no such run directory" not in said[0] or "MPI_ABORT" in result.stderr:
             sys.exit(f"a restart of a missing directory on {n} processes: {result.stderr}")
         damaged = work / "damaged"
         (damaged / "checkpoints").mkdir(parents=True)
@@ -240,7 +250,7 @@ def main():
         (damaged / "checkpoints" / "checkpoint_0000000010.ckpt").write_text("garbage\n")
         result = run(split + ["run", "--restart", str(damaged)], 2)
         said = [line for line in result.stderr.splitlines() if line.startswith("fddem:")]
-        if len(said) != 1 or "no usable checkpoint" not in said[0]:
+        if len(said) != 1 or "no usable checkpoint" not in said[0] or "MPI_ABORT" in result.stderr:
             sys.exit(f"a restart from a damaged checkpoint on {n} processes: {result.stderr}")
         # A damaged piece of the newest checkpoint (written on N processes, io/checkpoint.hpp):
         # the restart names the piece and the reason, sets the checkpoint aside and continues

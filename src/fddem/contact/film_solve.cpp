@@ -171,9 +171,10 @@ public:
     [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& right, double tolerance,
                                         bool& is_met) const
     {
-        is_met = true;
         if (size() <= largest_dense) {
-            return dense_solve(right);
+            Eigen::VectorXd x = dense_solve(right);
+            is_met = x.allFinite();
+            return x;
         }
         return conjugate_gradients(right, tolerance, is_met);
     }
@@ -246,7 +247,8 @@ private:
         };
         Eigen::VectorXd x = Eigen::VectorXd::Zero(size());
         const double goal = tolerance * right.norm();
-        if (goal == 0.0) {
+        is_met = std::isfinite(goal);
+        if (goal == 0.0 || !is_met) {
             return x;
         }
         Eigen::VectorXd r = right;
@@ -267,7 +269,7 @@ private:
             rz = next;
         }
         // Written so that a NaN counts as not met.
-        is_met = r.norm() <= goal;
+        is_met = r.norm() <= goal && x.allFinite();
         return x;
     }
 

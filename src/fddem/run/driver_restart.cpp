@@ -83,8 +83,10 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
     }
     if (ranks_.size() > 1 && !is_writer()) {
         if (!used) {
-            // No usable checkpoint: rank 0 says why below and ends every rank.
-            return {RunResult::Outcome::completed, 0};
+            // No usable checkpoint: rank 0 says why below; every rank ends with an input error
+            // (app/error_agreement.hpp).
+            throw InputError(checkpoint_directory(directory_).string(), 0, "",
+                             "no usable checkpoint");
         }
         // The other ranks step along; rank 0 checks and prepares the run directory (a rank-0
         // error below ends every rank: app/main.cpp).

@@ -54,18 +54,17 @@ RunResult run_case(const CaseConfig& config, const fs::path& directory, RunMonit
                    bool overwrite, const Communicator& ranks)
 {
     // Rank 0 alone checks (and then writes) the directory: its lock is tried by one process.
-    if (ranks.rank() == 0) {
+    // Every rank ends alike if it fails (agree_on_input_error).
+    agree_on_input_error(ranks, ranks.rank() == 0, [&] {
         std::error_code error;
         if (fs::is_directory(directory, error)) {
             check_unlocked(directory); // before "not empty": the holder of the lock is the news
         }
         check_run_directory(directory, overwrite);
-    }
+    });
     return drive(config, directory, monitor, ranks, [&](auto& driver) {
         std::optional<RunLock> lock;
-        if (ranks.rank() == 0) {
-            lock.emplace(directory);
-        }
+        agree_on_input_error(ranks, ranks.rank() == 0, [&] { lock.emplace(directory); });
         return driver.start(overwrite);
     });
 }
@@ -100,10 +99,10 @@ RunResult restart_run(const CaseConfig& config, const fs::path& directory, RunMo
                       bool rewrite_case, const Communicator& ranks)
 {
     std::optional<RunLock> lock;
-    if (ranks.rank() == 0) {
+    agree_on_input_error(ranks, ranks.rank() == 0, [&] {
         lock.emplace(directory);
         check_run_directory_writable(directory);
-    }
+    });
     return drive(config, directory, monitor, ranks,
                  [rewrite_case](auto& driver) { return driver.resume(rewrite_case); });
 }

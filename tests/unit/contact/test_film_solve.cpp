@@ -18,6 +18,8 @@
 #include <random>
 #include <vector>
 
+#include "support/nans_allowed.hpp"
+
 namespace fddem {
 namespace {
 
@@ -268,6 +270,39 @@ TEST(FilmSolve, ABodyBetweenTwoStiffFilmsIsStoppedNotReversed)
         EXPECT_GT(jacobi, 0.05) << "the Jacobi pass no longer reverses it: μ " << viscosity;
         EXPECT_LT(std::abs(after), 0.002) << "μ " << viscosity;
     }
+}
+
+TEST(FilmSolve, ASolveThatDoesNotMeetItsToleranceIsCounted)
+{
+    // The disk between two walls of the test above, once sound (no solve stops short) and once
+    // with a NaN in one gap's slip: the slips' solve cannot meet its tolerance and is counted
+    // (JointFilms::n_unfinished; a run warns of it and summary.json counts it), not passed
+    // silently. Then the same with a column of 14 disks, whose slips go to conjugate gradients.
+    const test::NansAllowed nan; // the NaN is made on purpose
+    const double a = 1e-3;
+    const double gap = 2e-6;
+    const double step = 1e-4;
+    const LubricationSettings s = settings_with(0.1, 2e-4);
+    Balls<2> balls;
+    balls.add(Vec<2>(0.0, 0.0), a, Vec<2>(0.0, -0.1), 0.0, 3e-3);
+    std::vector<FilmGap<2>> gaps{balls.wall(0, 1, 0, -a - gap), balls.wall(0, 1, 1, a + gap)};
+    EXPECT_EQ(joint_film_impulses<2>(balls.body, gaps, step, s).n_unfinished, 0);
+    gaps[1].geometry.slip_velocity[0] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(joint_film_impulses<2>(balls.body, gaps, step, s).n_unfinished, 1);
+
+    Balls<2> column;
+    std::vector<FilmGap<2>> column_gaps;
+    const int n = 14;
+    for (int i = 0; i < n; ++i) {
+        column.add(Vec<2>(0.0, (2.0 * a + gap) * i), a, Vec<2>(1e-3 * i, -0.01), 0.0, 3e-3);
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+        column_gaps.push_back(
+            column.pair(static_cast<std::size_t>(i), static_cast<std::size_t>(i + 1)));
+    }
+    EXPECT_EQ(joint_film_impulses<2>(column.body, column_gaps, step, s).n_unfinished, 0);
+    column_gaps[5].geometry.slip_velocity[0] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_GE(joint_film_impulses<2>(column.body, column_gaps, step, s).n_unfinished, 1);
 }
 
 TEST(FilmSolve, AGapTheFilmsCarryIntoTheRangeJoinsTheSolve)

@@ -254,6 +254,7 @@ int expect_bit_identical_continuation(const CaseConfig& config, int steps_before
     }
     RunRecord record;
     record.total_outer_iterations = 1234;
+    record.unfinished_film_solves = 7; // a restarted run warns of them only if it has none yet
     record.field_frames = {{0.0, "fields/fields_000000.vtr"}};
     write_checkpoint(file, original, record);
     int in_contact = 0;
@@ -271,6 +272,7 @@ int expect_bit_identical_continuation(const CaseConfig& config, int steps_before
     EXPECT_EQ(checkpoint.header().case_text, config.as_run);
     checkpoint.restore(restored, restored_record);
     EXPECT_EQ(restored_record.total_outer_iterations, 1234);
+    EXPECT_EQ(restored_record.unfinished_film_solves, 7);
     EXPECT_EQ(restored_record.field_frames, record.field_frames);
     for (int k = 0; k < steps_after; ++k) {
         static_cast<void>(restored.advance());
