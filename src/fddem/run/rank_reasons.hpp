@@ -25,7 +25,8 @@ namespace fddem {
 /// every rank) and agrees on its InputError: if it throws one on any rank, every rank throws,
 /// the rank that met it its own error and the others one with its text. So an input error
 /// that rank 0 alone can meet ends every rank alike, and the program ends them together
-/// without MPI_Abort (app/error_agreement.hpp). Collective: one maximum, as first_reason.
+/// without MPI_Abort (app/error_agreement.hpp). Collective, as first_reason: one maximum, and
+/// the texts gathered only when some rank met an error.
 template <class Check>
 void agree_on_input_error(const Communicator& ranks, bool is_checked, const Check& check)
 {
