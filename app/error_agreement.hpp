@@ -4,9 +4,9 @@
 // case file, a missing run directory; and rank 0's checks of the run directory and its lock,
 // which fddem/run/rank_reasons.hpp's agree_on_input_error makes every rank throw) is said
 // once, by rank 0, and then every rank returns its exit status through MPI_Finalize: no
-// MPI_Abort. MPI_Abort from the first rank to fail kills
-// the others at once, rank 0 too, and rank 0's message could be lost before the launcher
-// forwarded it (seen in CI: a split run's bad input ended with status 2 and no message).
+// MPI_Abort. MPI_Abort from the first rank to fail kills the others at once, rank 0 too, and
+// rank 0's message could be lost before the launcher forwarded it (seen in CI: a split run's
+// bad input ended with status 2 and no message).
 //
 // Whether every rank met the error is found by a non-blocking barrier on a communicator of its
 // own, so that it never matches a collective of the run that a rank without the error may be

@@ -84,7 +84,7 @@ struct DemOutcome {
     double max_relative_overlap = 0.0; ///< largest α / r of the smaller body
     int n_contacts = 0;                ///< contacts at the end of the step
     /// lubrication.film_solve "joint": its solves that stopped at an iteration limit before
-    /// their tolerance, over the step's sub-steps (contact/film_solve.hpp)
+    /// their tolerance or met a NaN, over the step's sub-steps (JointFilms::n_unfinished)
     int n_unfinished_film_solves = 0;
 };
 

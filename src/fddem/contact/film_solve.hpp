@@ -88,8 +88,9 @@ struct JointFilms {
     std::vector<Vec<Dim>> velocity_change;     ///< per body [m/s]; zero if not free
     std::vector<AngularVec<Dim>> omega_change; ///< per body [1/s]; zero if not free
     int n_newton_iterations = 0;
-    /// solves that stopped at an iteration limit (Newton's for the normal part, conjugate
-    /// gradients' for the slips) before their tolerance; the safeguard's last iterate is used
+    /// solves of the widening's last pass that stopped at an iteration limit before their
+    /// tolerance (Newton's for the normal part, conjugate gradients' for the slips) or met a
+    /// NaN (a factorised slip solve only that); the last iterate is used
     int n_unfinished = 0;
 };
 

@@ -88,8 +88,9 @@ RunResult Driver<Dim>::resume(bool rewrite_case)
             throw InputError(checkpoint_directory(directory_).string(), 0, "",
                              "no usable checkpoint");
         }
-        // The other ranks step along; rank 0 checks and prepares the run directory (a rank-0
-        // error below ends every rank: app/main.cpp).
+        // The other ranks step along; rank 0 checks and prepares the run directory. A rank-0
+        // input error below (outputs_.check: a CSV history missing or cut) is not agreed: rank
+        // 0 says it and, after app/main.cpp's wait, ends every rank by MPI_Abort.
         return sim_.is_finished(record_.last) ? RunResult{} : step_to_end();
     }
     if (!used) {
